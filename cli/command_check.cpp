@@ -1,0 +1,33 @@
+// shadetree check FILE...: parse and type-check graphs without running them.
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "cli/graph_loading.h"
+
+namespace shadetree {
+
+void add_check_command(CLI::App& app, CommandRunner& run) {
+  auto* command = app.add_subcommand("check", "type-check graph files");
+  auto files = std::make_shared<std::vector<std::string>>();
+  command->add_option("files", *files, "graph files")->required();
+  command->callback([&run, files] {
+    run = [files] {
+      ExitStatus worst = ExitStatus::ok;
+      for (const std::string& file : *files) {
+        Result<LoadedGraph> loaded = load_and_compile(file, {});
+        if (!loaded) {
+          const ExitStatus status = report(loaded.error());
+          if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
+          continue;
+        }
+        std::printf("ok: %s (%s graph \"%s\", %zu instructions)\n", file.c_str(), loaded->graph->kind.c_str(),
+                    loaded->graph->name.c_str(), loaded->ir.code.size());
+      }
+      return worst;
+    };
+  });
+}
+
+}  // namespace shadetree

@@ -1,0 +1,77 @@
+// shadetree render FILE -o OUT.png|OUT.exr: render a texture graph.
+#include <chrono>
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "cli/graph_loading.h"
+#include "interp/interpreter.h"
+#include "render/image_output.h"
+#include "render/progress.h"
+#include "render/texture_driver.h"
+
+namespace shadetree {
+
+namespace {
+struct RenderArguments {
+  std::string file;
+  std::string output;
+  std::string size;
+  std::vector<std::string> assignments;
+  std::optional<float> frame;
+  int threads = 0;
+  std::string backend = "interp";
+};
+
+ExitStatus render(const RenderArguments& arguments) {
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
+  if (!loaded) return report(loaded.error());
+  if (loaded->graph->kind != "texture")
+    return report({ExitStatus::invalid_input, arguments.file, {}, {},
+                   "render supports texture graphs for now; this is a " + loaded->graph->kind + " graph"});
+  TextureView view = TextureView::from_settings(loaded->graph->render);
+  if (!arguments.size.empty()) {
+    auto size = parse_size(arguments.size);
+    if (!size) return report(size.error());
+    view.width = size->first;
+    view.height = size->second;
+  }
+  if (arguments.frame) view.frame = *arguments.frame;
+
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<Kernel> kernel = make_interpreted_kernel(loaded->ir);
+  Result<Image> image = [&] {
+    ProgressReporter progress("rendering " + arguments.file);
+    TextureRenderOptions options;
+    options.threads = arguments.threads;
+    options.progress = [&progress](double fraction) { progress.update(fraction); };
+    return render_texture(*kernel, loaded->params, view, options);
+  }();
+  if (!image) return report(image.error());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Status written = write_image(*image, arguments.output);
+  if (!written) return report(written.error());
+  const double samples = static_cast<double>(view.width) * view.height;
+  std::fprintf(stderr, "%s: %dx%d, %.0f samples in %.3f s (%.2f M samples/s, %s) -> %s\n", arguments.file.c_str(),
+               view.width, view.height, samples, seconds, samples / seconds / 1e6, arguments.backend.c_str(),
+               arguments.output.c_str());
+  return ExitStatus::ok;
+}
+}  // namespace
+
+void add_render_command(CLI::App& app, CommandRunner& run) {
+  auto* command = app.add_subcommand("render", "render a texture graph to a PNG or EXR image");
+  auto arguments = std::make_shared<RenderArguments>();
+  command->add_option("file", arguments->file, "graph file")->required();
+  command->add_option("-o,--output", arguments->output, "output image (.png or .exr)")->required();
+  command->add_option("--size", arguments->size, "image size WIDTHxHEIGHT (default: the graph's render size)");
+  command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
+  command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
+  command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--backend", arguments->backend, "backend: interp")->check(CLI::IsMember({"interp"}));
+  command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
+}
+
+}  // namespace shadetree

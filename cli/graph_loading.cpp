@@ -1,0 +1,75 @@
+#include "cli/graph_loading.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "graph/check.h"
+#include "graph/lower.h"
+#include "graph/parse.h"
+
+namespace shadetree {
+
+Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments) {
+  Result<Graph> parsed = load_graph(path);
+  if (!parsed) return parsed.error();
+  auto graph = std::make_shared<const Graph>(std::move(*parsed));
+  Result<CheckedGraph> checked = check_graph(graph);
+  if (!checked) return checked.error();
+  Result<ShadeIR> ir = lower(*checked);
+  if (!ir) return ir.error();
+  LoadedGraph loaded{graph, std::move(*ir), {}};
+  loaded.params = param_block(*graph, loaded.ir);
+  for (const std::string& assignment : assignments) {
+    const auto equals = assignment.find('=');
+    if (equals == std::string::npos || equals == 0)
+      return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "--set expects NAME=VALUE, got \"" + assignment + "\""};
+    const std::string name = assignment.substr(0, equals);
+    std::string known;
+    for (std::size_t i = 0; i < graph->params.size(); ++i) {
+      const ParamDecl& param = graph->params[i];
+      known += (known.empty() ? "" : ", ") + param.name;
+      if (param.name != name) continue;
+      Result<std::vector<float>> value = parse_param_value(param, assignment.substr(equals + 1));
+      if (!value) {
+        Diagnostic error = value.error();
+        error.file = path;
+        return error;
+      }
+      std::copy(value->begin(), value->end(), loaded.params.begin() + loaded.ir.params[i].slot);
+      known.clear();
+      break;
+    }
+    if (!known.empty() || graph->params.empty())
+      return Diagnostic{ExitStatus::invalid_input, path, {}, {},
+                        "--set: unknown param \"" + name + "\" (params: " + (known.empty() ? "none" : known) + ")"};
+  }
+  return loaded;
+}
+
+Result<std::pair<int, int>> parse_size(const std::string& text) {
+  int width = 0, height = 0;
+  char separator = 0, trailing = 0;
+  std::istringstream stream(text);
+  if (!(stream >> width >> separator >> height) || separator != 'x' || (stream >> trailing))
+    return invalid_input("--size expects WIDTHxHEIGHT, got \"" + text + "\"");
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    return invalid_input("--size " + text + ": each side must be between 1 and 16384 pixels");
+  return std::pair{width, height};
+}
+
+Result<std::vector<float>> parse_floats(const std::string& text, std::size_t count, const std::string& what) {
+  std::vector<float> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(value)) break;
+    values.push_back(static_cast<float>(value));
+  }
+  if (values.size() != count)
+    return invalid_input(what + " expects " + std::to_string(count) + " comma-separated numbers, got \"" + text + "\"");
+  return values;
+}
+
+}  // namespace shadetree

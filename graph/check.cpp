@@ -1,0 +1,595 @@
+// Stage 2 of the pipeline: Graph -> CheckedGraph (see check.h).
+#include "graph/check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "nodes/noise_tables.h"
+#include "nodes/semantics/splines.h"
+
+namespace shadetree {
+namespace {
+
+struct CheckError {
+  Diagnostic diagnostic;
+};
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text.empty() ? "none" : text;
+}
+
+std::string type_text(Type type) { return std::string(type_name(type)); }
+
+bool op_has_seed(OpId id) {
+  return id == OpId::noise || id == OpId::dnoise || id == OpId::vnoise || id == OpId::turbulence || id == OpId::fbm;
+}
+
+// The signature of whatever a node calls: a library op or a function.
+struct Callee {
+  const OpDef* op = nullptr;
+  int function = -1;
+  std::vector<PortSpec> inputs;
+  std::vector<PortSpec> outputs;
+};
+
+class Checker {
+ public:
+  explicit Checker(const Graph& graph) : graph_(graph) {}
+
+  CheckedGraph run(std::shared_ptr<const Graph> graph) {
+    for (std::size_t i = 0; i < graph_.params.size(); ++i) check_param_declaration(graph_.params[i]);
+    for (std::size_t i = 0; i < graph_.functions.size(); ++i) {
+      const FunctionDef& function = graph_.functions[i];
+      if (find_op(function.name))
+        fail({}, {}, "function \"" + function.name + "\" has the name of a library op; rename it");
+      function_index_[function.name] = static_cast<int>(i);
+    }
+    functions_.resize(graph_.functions.size());
+    function_state_.assign(graph_.functions.size(), State::unvisited);
+    for (std::size_t i = 0; i < graph_.functions.size(); ++i) check_function(static_cast<int>(i));
+
+    CheckedGraph result;
+    result.graph = std::move(graph);
+    result.main = check_body(graph_.nodes, graph_.outputs, nullptr);
+    result.functions = std::move(functions_);
+    check_required_outputs(result.main);
+    return result;
+  }
+
+ private:
+  enum class State { unvisited, in_progress, done };
+
+  [[noreturn]] void fail(const std::string& node, const std::string& input, const std::string& message) const {
+    throw CheckError{Diagnostic{ExitStatus::invalid_input, graph_.file, node, input, message}};
+  }
+
+  void check_param_declaration(const ParamDecl& param) const {
+    if (param.min && param.max && *param.min > *param.max)
+      fail({}, {}, "param \"" + param.name + "\": min is above max");
+    Status range = check_param_range(param, param.default_value);
+    if (!range) fail({}, {}, range.error().message);
+  }
+
+  void check_function(int index) {
+    if (function_state_[index] == State::done) return;
+    const FunctionDef& function = graph_.functions[index];
+    if (function_state_[index] == State::in_progress)
+      fail({}, {}, "function \"" + function.name + "\" calls itself (directly or through other functions)");
+    function_state_[index] = State::in_progress;
+    functions_[index].definition = &function;
+    functions_[index].body = check_body(function.nodes, function.outputs, &function);
+    function_state_[index] = State::done;
+  }
+
+  Callee resolve_callee(const Node& node) {
+    Callee callee;
+    if (const OpDef* op = find_op(node.op)) {
+      callee.op = op;
+      callee.inputs = op->inputs;
+      callee.outputs = op->outputs;
+      if (!op->kinds.empty() && std::find(op->kinds.begin(), op->kinds.end(), graph_.kind) == op->kinds.end())
+        fail(node.id, {}, "op \"" + op->name + "\" is only available in " + op->kinds[0] + " graphs, this is a " +
+                              graph_.kind + " graph");
+      return callee;
+    }
+    auto found = function_index_.find(node.op);
+    if (found == function_index_.end())
+      fail(node.id, {}, "unknown op \"" + node.op + "\" (see `shadetree nodes` for the library)");
+    check_function(found->second);
+    callee.function = found->second;
+    const FunctionDef& function = graph_.functions[found->second];
+    for (const FunctionInput& input : function.inputs) {
+      PortSpec port{input.name, TypeRule::fixed, input.type, std::nullopt, {}};
+      callee.inputs.push_back(port);
+    }
+    const CheckedBody& body = functions_[found->second].body;
+    for (const CheckedOutput& output : body.outputs)
+      callee.outputs.push_back({output.name, TypeRule::fixed, output.source.type, std::nullopt, {}});
+    return callee;
+  }
+
+  // Body-local context: node ids, callees, and what `$name` refers to.
+  struct Body {
+    const std::vector<Node>* nodes;
+    const FunctionDef* function;  // null for the main graph
+    std::map<std::string, int> index;
+    std::vector<Callee> callees;
+    std::vector<int> order;          // dependency order of node indices
+    std::vector<int> checked_index;  // node index -> position in order
+    std::vector<CheckedNode> checked;
+  };
+
+  CheckedBody check_body(const std::vector<Node>& nodes, const std::vector<OutputDecl>& outputs,
+                         const FunctionDef* function) {
+    Body body{&nodes, function, {}, {}, {}, {}, {}};
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (!body.index.emplace(nodes[i].id, static_cast<int>(i)).second)
+        fail(nodes[i].id, {}, "duplicate node id");
+    }
+    for (const Node& node : nodes) body.callees.push_back(resolve_callee(node));
+    order_nodes(body);
+    body.checked_index.assign(nodes.size(), -1);
+    for (int node_index : body.order) {
+      body.checked_index[node_index] = static_cast<int>(body.checked.size());
+      body.checked.push_back(check_node(body, node_index));
+    }
+    CheckedBody result;
+    for (const OutputDecl& output : outputs) {
+      CheckedSource source = resolve_source(body, output.source, {}, "output \"" + output.name + "\"");
+      result.outputs.push_back({output.name, source});
+    }
+    result.nodes = std::move(body.checked);
+    return result;
+  }
+
+  int referenced_node(const Body& body, const Node& node, const std::string& input, const InputValue& value) const {
+    auto found = body.index.find(value.node);
+    if (found == body.index.end())
+      fail(node.id, input, "no node \"" + value.node + "\"" + (body.function ? " in function " + body.function->name : ""));
+    return found->second;
+  }
+
+  // Depth-first topological order; a back edge is a cycle, reported with
+  // its path.
+  void order_nodes(Body& body) const {
+    const auto& nodes = *body.nodes;
+    std::vector<State> state(nodes.size(), State::unvisited);
+    std::vector<int> path;
+    std::function<void(int)> visit = [&](int index) {
+      if (state[index] == State::done) return;
+      if (state[index] == State::in_progress) {
+        std::string cycle;
+        auto start = std::find(path.begin(), path.end(), index);
+        for (auto it = start; it != path.end(); ++it) cycle += nodes[*it].id + " -> ";
+        fail(nodes[index].id, {}, "cycle: " + cycle + nodes[index].id);
+      }
+      state[index] = State::in_progress;
+      path.push_back(index);
+      for (const auto& [input, value] : nodes[index].inputs)
+        if (value.kind == InputValue::Kind::node) visit(referenced_node(body, nodes[index], input, value));
+      path.pop_back();
+      state[index] = State::done;
+      body.order.push_back(index);
+    };
+    for (std::size_t i = 0; i < nodes.size(); ++i) visit(static_cast<int>(i));
+  }
+
+  // The type and origin of an input value (before conversion).
+  CheckedSource resolve_source(const Body& body, const InputValue& value, const std::string& node,
+                               const std::string& input) const {
+    CheckedSource source;
+    switch (value.kind) {
+      case InputValue::Kind::node: {
+        auto found = body.index.find(value.node);
+        if (found == body.index.end())
+          fail(node, input, "no node \"" + value.node + "\"" +
+                                (body.function ? " in function \"" + body.function->name + "\"" : ""));
+        const int checked = body.checked_index[found->second];
+        const Callee& callee = body.callees[found->second];
+        source.kind = CheckedSource::Kind::node;
+        source.index = checked;
+        if (!value.output.empty()) {
+          source.output = -1;
+          std::vector<std::string> names;
+          for (std::size_t i = 0; i < callee.outputs.size(); ++i) {
+            names.push_back(callee.outputs[i].name);
+            if (callee.outputs[i].name == value.output) source.output = static_cast<int>(i);
+          }
+          if (source.output < 0)
+            fail(node, input, "node \"" + value.node + "\" has no output \"" + value.output + "\" (outputs: " +
+                                  join_names(names) + ")");
+        }
+        source.type = body.checked[checked].output_types[source.output];
+        return source;
+      }
+      case InputValue::Kind::dollar: {
+        if (body.function) {
+          const auto& inputs = body.function->inputs;
+          for (std::size_t i = 0; i < inputs.size(); ++i) {
+            if (inputs[i].name == value.name) {
+              source.kind = CheckedSource::Kind::function_input;
+              source.index = static_cast<int>(i);
+              source.type = inputs[i].type;
+              return source;
+            }
+          }
+          fail(node, input, "function \"" + body.function->name + "\" has no input \"" + value.name +
+                                "\" (functions see only their inputs: pass params in as inputs)");
+        }
+        for (std::size_t i = 0; i < graph_.params.size(); ++i) {
+          if (graph_.params[i].name == value.name) {
+            source.kind = CheckedSource::Kind::param;
+            source.index = static_cast<int>(i);
+            source.type = graph_.params[i].type;
+            return source;
+          }
+        }
+        fail(node, input, "unknown param \"$" + value.name + "\"");
+      }
+      case InputValue::Kind::boolean:
+        source.constant = value.numbers;
+        source.type = Type::bool_;
+        return source;
+      case InputValue::Kind::number:
+        source.constant = value.numbers;
+        source.type = value.integral ? Type::int_ : Type::float_;
+        return source;
+      case InputValue::Kind::array:
+        source.constant = value.numbers;
+        source.type = value.numbers.size() == 2 ? Type::vec2 : Type::vec3;
+        return source;
+    }
+    fail(node, input, "unreadable value");
+  }
+
+  static bool is_literal_triple(const CheckedSource& source) {
+    return source.kind == CheckedSource::Kind::constant && source.constant.size() == 3;
+  }
+
+  // Whether a source may feed an input of type `target`. Literal triples
+  // are both vec3 and color; integral literals are ints or floats.
+  static bool accepts(const CheckedSource& source, Type target) {
+    if (is_literal_triple(source) && (target == Type::vec3 || target == Type::color)) return true;
+    return converts_to(source.type, target);
+  }
+
+  CheckedNode check_node(Body& body, int node_index) {
+    const Node& node = (*body.nodes)[node_index];
+    const Callee& callee = body.callees[node_index];
+    CheckedNode checked;
+    checked.node = &node;
+    checked.op = callee.op;
+    checked.function = callee.function;
+
+    std::vector<std::string> port_names;
+    for (const PortSpec& port : callee.inputs) port_names.push_back(port.name);
+    std::vector<std::optional<CheckedSource>> given(callee.inputs.size());
+    for (const auto& [input, value] : node.inputs) {
+      auto port = std::find(port_names.begin(), port_names.end(), input);
+      if (port == port_names.end())
+        fail(node.id, input, "unknown input (inputs of " + node.op + ": " + join_names(port_names) + ")");
+      given[port - port_names.begin()] = resolve_source(body, value, node.id, input);
+    }
+    for (std::size_t i = 0; i < callee.inputs.size(); ++i) {
+      if (given[i]) continue;
+      std::optional<std::vector<float>> fallback;
+      if (callee.inputs[i].default_value) fallback = std::vector<float>{*callee.inputs[i].default_value};
+      if (callee.function >= 0) fallback = graph_.functions[callee.function].inputs[i].default_value;
+      if (!fallback) fail(node.id, callee.inputs[i].name, "missing input (it has no default)");
+      CheckedSource source;
+      source.constant = *fallback;
+      source.type = fallback->size() == 1 ? Type::float_ : callee.inputs[i].type;
+      if (callee.inputs[i].type == Type::int_ || callee.inputs[i].type == Type::bool_)
+        source.type = callee.inputs[i].type;
+      given[i] = source;
+    }
+
+    if (callee.op) {
+      check_attributes(node, *callee.op, checked);
+      if (callee.op->generic != GenericSet::none)
+        checked.generic_type = infer_generic_type(node, *callee.op, callee.inputs, given, checked.generic_type);
+    }
+    for (std::size_t i = 0; i < callee.inputs.size(); ++i) {
+      const PortSpec& port = callee.inputs[i];
+      const Type target = port.rule == TypeRule::generic ? checked.generic_type : port.type;
+      const CheckedSource& source = *given[i];
+      if (!accepts(source, target)) {
+        std::string found = source.kind == CheckedSource::Kind::constant && source.type == Type::float_
+                                 ? "non-integral number " + text_of(source.constant[0])
+                                 : type_text(source.type);
+        fail(node.id, port.name, "expected " + type_text(target) + ", got " + found);
+      }
+      checked.input_types.push_back(target);
+      checked.inputs.push_back(source);
+    }
+    for (const PortSpec& port : callee.outputs)
+      checked.output_types.push_back(port.rule == TypeRule::generic ? checked.generic_type : port.type);
+    if (callee.op) check_limits(node, *callee.op, checked);
+    return checked;
+  }
+
+  static std::string text_of(float value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+  Type infer_generic_type(const Node& node, const OpDef& op, const std::vector<PortSpec>& ports,
+                          const std::vector<std::optional<CheckedSource>>& given, Type from_knots) const {
+    std::optional<Type> vector_type;
+    std::string vector_port;
+    std::optional<Type> literal_vector_type;
+    if (op.type_from_knots) {
+      vector_type = from_knots;
+      vector_port = "knots";
+    }
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+      if (ports[i].rule != TypeRule::generic) continue;
+      const CheckedSource& source = *given[i];
+      if (source.type == Type::bool_)
+        fail(node.id, ports[i].name, "expected a number or vector, got bool (use select to turn it into numbers)");
+      if (!is_vector(source.type)) continue;
+      if (source.kind == CheckedSource::Kind::constant) {
+        if (!literal_vector_type) literal_vector_type = source.type;
+        continue;
+      }
+      if (vector_type && *vector_type != source.type && !op.type_from_knots)
+        fail(node.id, ports[i].name,
+             "expected " + type_text(*vector_type) + " (like input \"" + vector_port + "\"), got " +
+                 type_text(source.type));
+      if (!vector_type) {
+        vector_type = source.type;
+        vector_port = ports[i].name;
+      }
+    }
+    Type result = vector_type ? *vector_type : literal_vector_type ? *literal_vector_type : Type::float_;
+    if (op.generic == GenericSet::vectors && !is_vector(result)) {
+      std::string first = ports.empty() ? std::string() : ports[0].name;
+      fail(node.id, first, "expected a vector (vec2, vec3 or color), got " + type_text(result));
+    }
+    return result;
+  }
+
+  const AttributeValue* attribute(const Node& node, const OpDef& op, const std::string& name) const {
+    auto found = node.attributes.find(name);
+    if (found != node.attributes.end()) return &found->second;
+    for (const AttributeSpec& spec : op.attributes)
+      if (spec.name == name && spec.required) fail(node.id, {}, "missing attribute \"" + name + "\" (" + spec.doc + ")");
+    return nullptr;
+  }
+
+  // Validates attribute names and values, and lays out their data for the
+  // semantics: see CheckedNode::data and immediate.
+  void check_attributes(const Node& node, const OpDef& op, CheckedNode& checked) const {
+    std::vector<std::string> names;
+    for (const AttributeSpec& spec : op.attributes) names.push_back(spec.name);
+    for (const auto& [name, value] : node.attributes) {
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        fail(node.id, {}, "unknown field \"" + name + "\" (inputs go in \"in\"; attributes of " + op.name + ": " +
+                              join_names(names) + ")");
+    }
+    if (op_has_seed(op.id)) {
+      checked.immediate[0] = static_cast<std::int32_t>(default_noise_seed);
+      if (const AttributeValue* seed = attribute(node, op, "seed")) {
+        if (seed->kind != AttributeValue::Kind::number || seed->number != std::floor(seed->number) ||
+            seed->number < 0 || seed->number > 4294967295.0)
+          fail(node.id, {}, "attribute \"seed\" must be an integer in [0, 4294967295]");
+        checked.immediate[0] = static_cast<std::int32_t>(static_cast<std::uint32_t>(seed->number));
+      }
+    }
+    switch (op.id) {
+      case OpId::spline: {
+        int basis = 0;
+        if (const AttributeValue* value = attribute(node, op, "basis")) {
+          const auto& choices = op.attributes[1].choices;
+          auto found = value->kind == AttributeValue::Kind::text
+                           ? std::find(choices.begin(), choices.end(), value->text)
+                           : choices.end();
+          if (found == choices.end())
+            fail(node.id, {}, "attribute \"basis\" must be one of: " + join_names(choices));
+          basis = static_cast<int>(found - choices.begin());
+        }
+        const int minimum = basis == static_cast<int>(semantics::SplineBasis::catmull_rom) ? 4
+                            : basis == static_cast<int>(semantics::SplineBasis::linear) ? 2
+                                                                                         : 1;
+        const int components = knot_list(node, *attribute(node, op, "knots"), "knots", minimum, checked);
+        checked.immediate[0] = components;
+        checked.immediate[1] = basis;
+        checked.generic_type = type_of_knots(components);
+        break;
+      }
+      case OpId::color_table: {
+        const int components = knot_list(node, *attribute(node, op, "entries"), "entries", 1, checked);
+        const int count = static_cast<int>(checked.data.size()) / components;
+        // Prefix sums follow the entries: prefix[k] = sum of the first k.
+        std::vector<float> prefix(static_cast<std::size_t>((count + 1) * components), 0.0f);
+        for (int k = 0; k < count; ++k)
+          for (int c = 0; c < components; ++c)
+            prefix[(k + 1) * components + c] = prefix[k * components + c] + checked.data[k * components + c];
+        checked.data.insert(checked.data.end(), prefix.begin(), prefix.end());
+        checked.immediate[0] = components;
+        checked.immediate[1] = count;
+        checked.generic_type = type_of_knots(components);
+        break;
+      }
+      case OpId::table1d: {
+        float domain[2] = {0.0f, 1.0f};
+        if (const AttributeValue* value = attribute(node, op, "domain")) {
+          if (value->kind != AttributeValue::Kind::list || value->items.size() != 2 || value->items_are_arrays ||
+              value->items[0][0] == value->items[1][0])
+            fail(node.id, {}, "attribute \"domain\" must be [lo, hi] with lo != hi");
+          domain[0] = value->items[0][0];
+          domain[1] = value->items[1][0];
+        }
+        std::vector<float> values;
+        const int components = knot_list(node, *attribute(node, op, "values"), "values", 1, checked);
+        if (components != 1) fail(node.id, {}, "attribute \"values\" must be a list of numbers");
+        values.swap(checked.data);
+        checked.data = {domain[0], domain[1]};
+        checked.data.insert(checked.data.end(), values.begin(), values.end());
+        checked.immediate[0] = static_cast<int>(values.size());
+        break;
+      }
+      case OpId::table2d: {
+        const AttributeValue& value = *attribute(node, op, "values");
+        if (value.kind != AttributeValue::Kind::list || value.items.empty() || !value.items_are_arrays)
+          fail(node.id, {}, "attribute \"values\" must be a list of rows, each a list of numbers");
+        const std::size_t columns = value.items[0].size();
+        if (columns == 0 || value.items.size() * columns > static_cast<std::size_t>(max_table_entries))
+          fail(node.id, {}, "attribute \"values\" must have 1 to " + std::to_string(max_table_entries) + " entries");
+        for (const auto& row : value.items) {
+          if (row.size() != columns) fail(node.id, {}, "attribute \"values\": all rows must have the same length");
+          checked.data.insert(checked.data.end(), row.begin(), row.end());
+        }
+        checked.immediate[0] = static_cast<int>(value.items.size());
+        checked.immediate[1] = static_cast<int>(columns);
+        break;
+      }
+      default:
+        break;
+    }
+  }
+
+  static Type type_of_knots(int components) {
+    return components == 1 ? Type::float_ : components == 2 ? Type::vec2 : Type::color;
+  }
+
+  // Appends a list of equally sized values to checked.data; returns their
+  // component count.
+  int knot_list(const Node& node, const AttributeValue& value, const std::string& name, int minimum,
+                CheckedNode& checked) const {
+    if (value.kind != AttributeValue::Kind::list)
+      fail(node.id, {}, "attribute \"" + name + "\" must be a list of numbers or of [r, g, b] arrays");
+    if (static_cast<int>(value.items.size()) < minimum ||
+        value.items.size() > static_cast<std::size_t>(max_table_entries))
+      fail(node.id, {}, "attribute \"" + name + "\" needs " + std::to_string(minimum) + " to " +
+                            std::to_string(max_table_entries) + " values, got " +
+                            std::to_string(value.items.size()));
+    const std::size_t components = value.items[0].size();
+    if (components < 1 || components > 3)
+      fail(node.id, {}, "attribute \"" + name + "\" values must be numbers or arrays of 2 or 3 numbers");
+    for (const auto& item : value.items) {
+      if (item.size() != components)
+        fail(node.id, {}, "attribute \"" + name + "\" values must all have the same number of components");
+      checked.data.insert(checked.data.end(), item.begin(), item.end());
+    }
+    return static_cast<int>(components);
+  }
+
+  // Octave and iteration counts given as literals or params must respect
+  // the documented limits (the loops stop there regardless).
+  void check_limits(const Node& node, const OpDef& op, const CheckedNode& checked) const {
+    for (std::size_t i = 0; i < op.inputs.size(); ++i) {
+      const std::string& name = op.inputs[i].name;
+      int limit = 0;
+      if (name == "octaves") limit = max_octaves;
+      if (name == "iterations") limit = max_julia_iterations;
+      if (limit == 0) continue;
+      const CheckedSource& source = checked.inputs[i];
+      std::vector<float> values;
+      if (source.kind == CheckedSource::Kind::constant) values = source.constant;
+      if (source.kind == CheckedSource::Kind::param) {
+        const ParamDecl& param = graph_.params[source.index];
+        values = param.default_value;
+        if (param.max) values.push_back(*param.max);
+      }
+      for (float value : values)
+        if (value < 0 || value > limit)
+          fail(node.id, name, name + " must be between 0 and " + std::to_string(limit) + ", got " + text_of(value));
+    }
+  }
+
+  void check_required_outputs(const CheckedBody& body) const {
+    for (const RequiredOutput& required : required_outputs(graph_.kind)) {
+      auto found = std::find_if(body.outputs.begin(), body.outputs.end(),
+                                [&](const CheckedOutput& output) { return output.name == required.name; });
+      if (found == body.outputs.end())
+        fail({}, {}, "a " + graph_.kind + " graph needs an output \"" + required.name + "\"");
+      const Type type = found->source.type;
+      bool accepted = false;
+      std::string expected;
+      for (Type candidate : required.types) {
+        accepted |= accepts(found->source, candidate);
+        expected += (expected.empty() ? "" : " or ") + type_text(candidate);
+      }
+      if (!accepted)
+        fail({}, {}, "output \"" + std::string(required.name) + "\": expected " + expected + ", got " +
+                         type_text(type));
+    }
+  }
+
+  const Graph& graph_;
+  std::map<std::string, int> function_index_;
+  std::vector<CheckedFunction> functions_;
+  std::vector<State> function_state_;
+};
+
+}  // namespace
+
+std::vector<RequiredOutput> required_outputs(const std::string& kind) {
+  if (kind == "volume") return {{"density", {Type::float_}}};
+  return {{"color", {Type::color, Type::float_}}};
+}
+
+Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph) {
+  try {
+    return Checker(*graph).run(graph);
+  } catch (const CheckError& error) {
+    return error.diagnostic;
+  }
+}
+
+Result<std::vector<float>> parse_param_value(const ParamDecl& param, const std::string& text) {
+  auto bad = [&](const std::string& why) {
+    return invalid_input("param \"" + param.name + "\": " + why + ", got \"" + text + "\"");
+  };
+  if (param.type == Type::bool_) {
+    if (text == "true" || text == "1") return std::vector<float>{1.0f};
+    if (text == "false" || text == "0") return std::vector<float>{0.0f};
+    return bad("expected true or false");
+  }
+  std::vector<float> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(value) || std::fabs(value) > 3.4e38)
+      return bad("expected " + std::to_string(component_count(param.type)) + " comma-separated number(s)");
+    values.push_back(static_cast<float>(value));
+  }
+  const std::size_t components = static_cast<std::size_t>(component_count(param.type));
+  if (values.size() == 1 && components > 1) values.assign(components, values[0]);
+  if (values.size() != components)
+    return bad("expected " + std::to_string(components) + " comma-separated numbers for " +
+               std::string(type_name(param.type)));
+  if (param.type == Type::int_ && values[0] != std::floor(values[0])) return bad("expected an integer");
+  Status range = check_param_range(param, values);
+  if (!range) return range.error();
+  return values;
+}
+
+Status check_param_range(const ParamDecl& param, const std::vector<float>& value) {
+  for (float component : value) {
+    std::ostringstream text;
+    text << component;
+    if (param.min && component < *param.min) {
+      std::ostringstream limit;
+      limit << *param.min;
+      return invalid_input("param \"" + param.name + "\": " + text.str() + " is below the minimum " + limit.str());
+    }
+    if (param.max && component > *param.max) {
+      std::ostringstream limit;
+      limit << *param.max;
+      return invalid_input("param \"" + param.name + "\": " + text.str() + " is above the maximum " + limit.str());
+    }
+  }
+  return success();
+}
+
+}  // namespace shadetree

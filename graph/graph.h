@@ -1,0 +1,99 @@
+// A parsed graph file: what the user wrote, not yet checked. Every name and
+// reference is kept as text so that the checker can report it.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graph/type.h"
+
+namespace shadetree {
+
+inline constexpr int graph_format_version = 1;
+
+// The value given to a node input: a wire from another node's output, a
+// `$name` reference (a param, or inside a function, a function input) or a
+// literal.
+struct InputValue {
+  enum class Kind { node, dollar, number, boolean, array } kind = Kind::number;
+  std::string node;    // Kind::node: node id
+  std::string output;  // Kind::node: output name, empty for the node's first output
+  std::string name;    // Kind::dollar: param or function-input name
+  std::vector<float> numbers;  // number (1), array (2 or 3) or boolean (0/1)
+  bool integral = false;       // Kind::number: written without a fraction
+  std::string text;            // as written, for messages
+};
+
+// A compile-time attribute of a node (spline knots, noise seed, ...):
+// a number, a string, or a list whose items are numbers or number arrays.
+struct AttributeValue {
+  enum class Kind { number, text, list } kind = Kind::number;
+  double number = 0;
+  std::string text;
+  std::vector<std::vector<float>> items;
+  bool items_are_arrays = false;
+};
+
+struct Node {
+  std::string id;
+  std::string op;
+  std::vector<std::pair<std::string, InputValue>> inputs;  // in file order
+  std::map<std::string, AttributeValue> attributes;
+};
+
+struct OutputDecl {
+  std::string name;
+  InputValue source;
+};
+
+struct ParamDecl {
+  std::string name;
+  Type type = Type::float_;
+  std::vector<float> default_value;  // component_count(type) values
+  std::optional<float> min, max;     // per component
+  std::string doc;
+};
+
+// A user-defined node: a subgraph declared once and used like a library op.
+struct FunctionInput {
+  std::string name;
+  Type type = Type::float_;
+  std::optional<std::vector<float>> default_value;
+};
+
+struct FunctionDef {
+  std::string name;
+  std::string doc;
+  std::vector<FunctionInput> inputs;
+  std::vector<Node> nodes;
+  std::vector<OutputDecl> outputs;
+};
+
+// Optional render settings; the command line overrides them.
+struct RenderSettings {
+  int width = 512;
+  int height = 512;
+  float domain_min[2] = {0.0f, 0.0f};  // P.xy at the image's lower-left corner
+  float domain_max[2] = {1.0f, 1.0f};  // P.xy at the upper-right corner
+  float z = 0.0f;                      // P.z of the image plane
+  float frame = 0.0f;
+};
+
+struct Graph {
+  std::string file;  // as given on the command line, for messages
+  int version = graph_format_version;
+  std::string name;
+  std::string kind;  // texture, surface or volume
+  std::string doc;
+  std::vector<ParamDecl> params;
+  std::vector<FunctionDef> functions;
+  std::vector<Node> nodes;
+  std::vector<OutputDecl> outputs;
+  RenderSettings render;
+};
+
+inline const char* const graph_kinds[] = {"texture", "surface", "volume"};
+
+}  // namespace shadetree

@@ -1,0 +1,155 @@
+// Stage 3 of the pipeline: CheckedGraph -> ShadeIR (see lower.h).
+#include "graph/lower.h"
+
+#include <map>
+
+#include "graph/passes/eliminate_dead_code.h"
+#include "graph/passes/place_conditional_regions.h"
+
+namespace shadetree {
+namespace {
+
+bool is_uniform_input(OpId op) { return op == OpId::time || op == OpId::frame; }
+
+class Lowering {
+ public:
+  explicit Lowering(const CheckedGraph& graph) : graph_(graph) {}
+
+  ShadeIR run() {
+    const Graph& source = *graph_.graph;
+    for (const ParamDecl& param : source.params) {
+      ir_.params.push_back({param.name, param.type, ir_.param_block_size});
+      ir_.param_block_size += component_count(param.type);
+    }
+    param_values_.assign(source.params.size(), -1);
+    auto outputs = lower_body(graph_.main, {});
+    for (std::size_t i = 0; i < graph_.main.outputs.size(); ++i)
+      ir_.outputs.push_back({graph_.main.outputs[i].name, outputs[i].second, outputs[i].first});
+    return std::move(ir_);
+  }
+
+ private:
+  using TypedValue = std::pair<std::int32_t, Type>;
+
+  std::int32_t append(IrInstr instr) {
+    ir_.code.push_back(std::move(instr));
+    return static_cast<std::int32_t>(ir_.code.size() - 1);
+  }
+
+  std::int32_t constant(const std::vector<float>& values, Type type, const std::string& source) {
+    IrInstr instr;
+    instr.kind = IrOpKind::constant;
+    instr.type = values.size() == 1 ? (type == Type::int_ || type == Type::bool_ ? type : Type::float_) : type;
+    instr.uniform = true;
+    instr.data_offset = static_cast<std::int32_t>(ir_.data.size());
+    instr.data_count = static_cast<std::int32_t>(values.size());
+    ir_.data.insert(ir_.data.end(), values.begin(), values.end());
+    instr.source = source;
+    return append(std::move(instr));
+  }
+
+  std::int32_t param(int index) {
+    if (param_values_[index] >= 0) return param_values_[index];
+    IrInstr instr;
+    instr.kind = IrOpKind::param;
+    instr.type = ir_.params[index].type;
+    instr.uniform = true;
+    instr.immediate[0] = ir_.params[index].slot;
+    instr.source = "$" + ir_.params[index].name;
+    return param_values_[index] = append(std::move(instr));
+  }
+
+  // Lowers one body; returns the value and type of each of its outputs.
+  std::vector<TypedValue> lower_body(const CheckedBody& body, const std::vector<TypedValue>& arguments) {
+    std::vector<std::vector<TypedValue>> node_outputs(body.nodes.size());
+    auto value_of = [&](const CheckedSource& source, Type target, const std::string& where) -> TypedValue {
+      switch (source.kind) {
+        case CheckedSource::Kind::node: return node_outputs[source.index][source.output];
+        case CheckedSource::Kind::param: return {param(source.index), source.type};
+        case CheckedSource::Kind::function_input: return arguments[source.index];
+        case CheckedSource::Kind::constant: return {constant(source.constant, target, where), target};
+      }
+      return {-1, target};
+    };
+    for (std::size_t n = 0; n < body.nodes.size(); ++n) {
+      const CheckedNode& node = body.nodes[n];
+      std::vector<TypedValue> inputs;
+      for (std::size_t i = 0; i < node.inputs.size(); ++i)
+        inputs.push_back(value_of(node.inputs[i], node.input_types[i], node.node->id));
+      if (node.function >= 0) {
+        node_outputs[n] = lower_body(graph_.functions[node.function].body, inputs);
+        continue;
+      }
+      node_outputs[n] = lower_op(node, inputs);
+    }
+    std::vector<TypedValue> outputs;
+    for (const CheckedOutput& output : body.outputs)
+      outputs.push_back(value_of(output.source, output.source.type, "output " + output.name));
+    return outputs;
+  }
+
+  std::vector<TypedValue> lower_op(const CheckedNode& node, const std::vector<TypedValue>& inputs) {
+    const OpId op = node.op->id;
+    if (op == OpId::split) {
+      std::vector<TypedValue> components;
+      const int available = component_count(inputs[0].second);
+      for (int c = 0; c < 3; ++c) {
+        if (c >= available) {
+          components.push_back({constant({0.0f}, Type::float_, node.node->id), Type::float_});
+          continue;
+        }
+        IrInstr instr;
+        instr.kind = IrOpKind::extract;
+        instr.type = Type::float_;
+        instr.arg_count = 1;
+        instr.args[0] = inputs[0].first;
+        instr.uniform = ir_.code[inputs[0].first].uniform;
+        instr.immediate[0] = c;
+        instr.source = node.node->id;
+        components.push_back({append(std::move(instr)), Type::float_});
+      }
+      return components;
+    }
+    IrInstr instr;
+    instr.kind = IrOpKind::op;
+    instr.op = op;
+    instr.type = node.output_types[0];
+    instr.arg_count = static_cast<std::uint8_t>(inputs.size());
+    bool uniform = node.op->family != OpFamily::input || is_uniform_input(op);
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      instr.args[i] = inputs[i].first;
+      uniform = uniform && ir_.code[inputs[i].first].uniform;
+    }
+    instr.uniform = uniform;
+    instr.data_offset = static_cast<std::int32_t>(ir_.data.size());
+    instr.data_count = static_cast<std::int32_t>(node.data.size());
+    ir_.data.insert(ir_.data.end(), node.data.begin(), node.data.end());
+    instr.immediate = {node.immediate[0], node.immediate[1]};
+    instr.source = node.node->id;
+    return {{append(std::move(instr)), node.output_types[0]}};
+  }
+
+  const CheckedGraph& graph_;
+  ShadeIR ir_;
+  std::vector<std::int32_t> param_values_;
+};
+
+}  // namespace
+
+Result<ShadeIR> lower(const CheckedGraph& graph) {
+  ShadeIR ir = Lowering(graph).run();
+  eliminate_dead_code(ir);
+  place_conditional_regions(ir);
+  return ir;
+}
+
+std::vector<float> param_block(const Graph& graph, const ShadeIR& ir) {
+  std::vector<float> block(static_cast<std::size_t>(ir.param_block_size), 0.0f);
+  for (std::size_t i = 0; i < ir.params.size(); ++i) {
+    const auto& value = graph.params[i].default_value;
+    std::copy(value.begin(), value.end(), block.begin() + ir.params[i].slot);
+  }
+  return block;
+}
+
+}  // namespace shadetree

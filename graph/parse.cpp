@@ -1,0 +1,380 @@
+// Stage 1 of the pipeline (see docs/architecture.md): JSON -> Graph.
+// Structural errors (a field of the wrong JSON type, an unknown field, a
+// malformed reference) are reported here with the node they occur in; type
+// and name errors are left to check, which knows the node library.
+#include "graph/parse.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace shadetree {
+namespace {
+
+using json = nlohmann::json;
+
+// Parsing stops at the first error: a small exception type carries it out
+// of the recursive descent and parse_graph turns it back into a value.
+struct ParseError {
+  Diagnostic diagnostic;
+};
+
+class Parser {
+ public:
+  explicit Parser(std::string file) : file_(std::move(file)) {}
+
+  Graph parse(const json& document) {
+    if (!document.is_object()) fail({}, {}, "a graph file must hold a JSON object");
+    check_fields(document, {"format", "version", "name", "kind", "doc", "params", "functions", "nodes", "outputs",
+                            "render"},
+                 {}, "graph");
+    Graph graph;
+    graph.file = file_;
+    const std::string format = required_string(document, "format", {});
+    if (format != "shadetree-graph")
+      fail({}, {}, "field \"format\" must be \"shadetree-graph\", got \"" + format + "\"");
+    if (!document.contains("version") || !document["version"].is_number_integer())
+      fail({}, {}, "field \"version\" must be an integer (this shadetree reads version " +
+                       std::to_string(graph_format_version) + ")");
+    graph.version = document["version"].get<int>();
+    if (graph.version < 1 || graph.version > graph_format_version)
+      fail({}, {}, "version " + std::to_string(graph.version) + " is not supported (this shadetree reads version " +
+                       std::to_string(graph_format_version) + ")");
+    graph.name = optional_string(document, "name", {}, stem(file_));
+    graph.kind = required_string(document, "kind", {});
+    bool known_kind = false;
+    for (const char* kind : graph_kinds) known_kind |= graph.kind == kind;
+    if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + graph.kind + "\"");
+    graph.doc = optional_string(document, "doc", {}, {});
+    if (document.contains("params")) graph.params = parse_params(document["params"]);
+    if (document.contains("functions")) graph.functions = parse_functions(document["functions"]);
+    if (!document.contains("nodes")) fail({}, {}, "missing field \"nodes\"");
+    graph.nodes = parse_nodes(document["nodes"], {});
+    if (!document.contains("outputs")) fail({}, {}, "missing field \"outputs\"");
+    graph.outputs = parse_outputs(document["outputs"], {});
+    if (document.contains("render")) graph.render = parse_render(document["render"]);
+    return graph;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& node, const std::string& input, const std::string& message) const {
+    throw ParseError{Diagnostic{ExitStatus::invalid_input, file_, node, input, message}};
+  }
+
+  static std::string stem(const std::string& path) {
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    return name.substr(0, name.rfind('.'));
+  }
+
+  void check_fields(const json& object, std::initializer_list<const char*> allowed, const std::string& node,
+                    const std::string& what) const {
+    for (const auto& [key, value] : object.items()) {
+      bool known = false;
+      for (const char* name : allowed) known |= key == name;
+      if (!known) fail(node, {}, "unknown field \"" + key + "\" in " + what);
+    }
+  }
+
+  std::string required_string(const json& object, const char* key, const std::string& node) const {
+    if (!object.contains(key)) fail(node, {}, std::string("missing field \"") + key + "\"");
+    if (!object[key].is_string()) fail(node, {}, std::string("field \"") + key + "\" must be a string");
+    return object[key].get<std::string>();
+  }
+
+  std::string optional_string(const json& object, const char* key, const std::string& node,
+                              std::string fallback) const {
+    if (!object.contains(key)) return fallback;
+    return required_string(object, key, node);
+  }
+
+  float number(const json& value, const std::string& node, const std::string& what) const {
+    if (!value.is_number()) fail(node, {}, what + " must be a number");
+    const double number = value.get<double>();
+    if (!std::isfinite(number) || std::fabs(number) > 3.4e38)
+      fail(node, {}, what + " is out of the range of a 32-bit float");
+    return static_cast<float>(number);
+  }
+
+  std::vector<float> numbers(const json& value, const std::string& node, const std::string& what) const {
+    if (value.is_number()) return {number(value, node, what)};
+    if (!value.is_array()) fail(node, {}, what + " must be a number or an array of numbers");
+    std::vector<float> result;
+    for (const json& item : value) result.push_back(number(item, node, what + " item"));
+    return result;
+  }
+
+  Type type_field(const json& value, const std::string& node, const std::string& what) const {
+    if (!value.is_string()) fail(node, {}, what + " must be a type name");
+    auto type = parse_type_name(value.get<std::string>());
+    if (!type)
+      fail(node, {}, "unknown type \"" + value.get<std::string>() + "\" (types: float, int, bool, vec2, vec3, color)");
+    return *type;
+  }
+
+  // A default or literal of a declared type: a number, a boolean or an
+  // array of as many numbers as the type has components.
+  std::vector<float> typed_value(const json& value, Type type, const std::string& node,
+                                 const std::string& what) const {
+    if (type == Type::bool_) {
+      if (!value.is_boolean()) fail(node, {}, what + " must be true or false");
+      return {value.get<bool>() ? 1.0f : 0.0f};
+    }
+    std::vector<float> result = numbers(value, node, what);
+    const std::size_t components = static_cast<std::size_t>(component_count(type));
+    if (result.size() == 1 && components > 1) result.assign(components, result[0]);
+    if (result.size() != components)
+      fail(node, {}, what + " must have " + std::to_string(components) + " components for type " +
+                         std::string(type_name(type)));
+    if (type == Type::int_ && result[0] != std::floor(result[0])) fail(node, {}, what + " must be an integer");
+    return result;
+  }
+
+  std::vector<ParamDecl> parse_params(const json& params) const {
+    if (!params.is_object()) fail({}, {}, "field \"params\" must be an object of name: {type, default, ...}");
+    std::vector<ParamDecl> result;
+    for (const auto& [name, spec] : params.items()) {
+      const std::string where = "param \"" + name + "\"";
+      if (!spec.is_object()) fail({}, {}, where + " must be an object with type and default");
+      check_fields(spec, {"type", "default", "min", "max", "doc"}, {}, where);
+      ParamDecl param;
+      param.name = name;
+      if (!spec.contains("type")) fail({}, {}, where + " has no type");
+      param.type = type_field(spec["type"], {}, where + " type");
+      if (!spec.contains("default")) fail({}, {}, where + " has no default");
+      param.default_value = typed_value(spec["default"], param.type, {}, where + " default");
+      if (spec.contains("min")) param.min = number(spec["min"], {}, where + " min");
+      if (spec.contains("max")) param.max = number(spec["max"], {}, where + " max");
+      param.doc = optional_string(spec, "doc", {}, {});
+      result.push_back(std::move(param));
+    }
+    return result;
+  }
+
+  std::vector<FunctionDef> parse_functions(const json& functions) const {
+    if (!functions.is_object()) fail({}, {}, "field \"functions\" must be an object of name: {inputs, nodes, outputs}");
+    std::vector<FunctionDef> result;
+    for (const auto& [name, spec] : functions.items()) {
+      const std::string where = "function \"" + name + "\"";
+      if (!spec.is_object()) fail({}, {}, where + " must be an object");
+      check_fields(spec, {"doc", "inputs", "nodes", "outputs"}, {}, where);
+      FunctionDef function;
+      function.name = name;
+      function.doc = optional_string(spec, "doc", {}, {});
+      if (spec.contains("inputs")) {
+        if (!spec["inputs"].is_object()) fail({}, {}, where + " inputs must be an object of name: type");
+        for (const auto& [input_name, input_spec] : spec["inputs"].items()) {
+          FunctionInput input;
+          input.name = input_name;
+          const std::string input_where = where + " input \"" + input_name + "\"";
+          if (input_spec.is_object()) {
+            check_fields(input_spec, {"type", "default"}, {}, input_where);
+            if (!input_spec.contains("type")) fail({}, {}, input_where + " has no type");
+            input.type = type_field(input_spec["type"], {}, input_where);
+            if (input_spec.contains("default"))
+              input.default_value = typed_value(input_spec["default"], input.type, {}, input_where + " default");
+          } else {
+            input.type = type_field(input_spec, {}, input_where);
+          }
+          function.inputs.push_back(std::move(input));
+        }
+      }
+      if (!spec.contains("nodes")) fail({}, {}, where + " has no nodes");
+      function.nodes = parse_nodes(spec["nodes"], where + " ");
+      if (!spec.contains("outputs")) fail({}, {}, where + " has no outputs");
+      function.outputs = parse_outputs(spec["outputs"], where + " ");
+      result.push_back(std::move(function));
+    }
+    return result;
+  }
+
+  std::vector<Node> parse_nodes(const json& nodes, const std::string& scope) const {
+    if (!nodes.is_array()) fail({}, {}, scope + "field \"nodes\" must be an array");
+    if (nodes.size() > max_nodes_per_graph)
+      fail({}, {}, scope + "has " + std::to_string(nodes.size()) + " nodes, more than the limit of " +
+                       std::to_string(max_nodes_per_graph));
+    std::vector<Node> result;
+    for (std::size_t index = 0; index < nodes.size(); ++index) {
+      const json& spec = nodes[index];
+      const std::string position = scope + "node #" + std::to_string(index + 1);
+      if (!spec.is_object()) fail({}, {}, position + " must be an object with id and op");
+      if (!spec.contains("id") || !spec["id"].is_string() || spec["id"].get<std::string>().empty())
+        fail({}, {}, position + " needs a non-empty string \"id\"");
+      Node node;
+      node.id = spec["id"].get<std::string>();
+      if (node.id[0] == '$' || node.id.find('.') != std::string::npos)
+        fail(node.id, {}, "ids may not start with '$' or contain '.'");
+      node.op = required_string(spec, "op", node.id);
+      for (const auto& [key, value] : spec.items()) {
+        if (key == "id" || key == "op" || key == "doc") continue;
+        if (key == "in") {
+          if (!value.is_object()) fail(node.id, {}, "field \"in\" must be an object of input: value");
+          for (const auto& [input, input_value] : value.items())
+            node.inputs.emplace_back(input, parse_input_value(input_value, node.id, input));
+        } else {
+          node.attributes[key] = parse_attribute(value, node.id, key);
+        }
+      }
+      result.push_back(std::move(node));
+    }
+    return result;
+  }
+
+  InputValue parse_input_value(const json& value, const std::string& node, const std::string& input) const {
+    InputValue result;
+    result.text = value.dump();
+    if (value.is_string()) {
+      const std::string text = value.get<std::string>();
+      result.text = text;
+      if (text.empty()) fail(node, input, "empty reference");
+      if (text[0] == '$') {
+        result.kind = InputValue::Kind::dollar;
+        result.name = text.substr(1);
+        if (result.name.empty()) fail(node, input, "\"$\" must be followed by a param name");
+        return result;
+      }
+      result.kind = InputValue::Kind::node;
+      const auto dot = text.find('.');
+      result.node = text.substr(0, dot);
+      if (dot != std::string::npos) result.output = text.substr(dot + 1);
+      return result;
+    }
+    if (value.is_boolean()) {
+      result.kind = InputValue::Kind::boolean;
+      result.numbers = {value.get<bool>() ? 1.0f : 0.0f};
+      return result;
+    }
+    if (value.is_number()) {
+      result.kind = InputValue::Kind::number;
+      result.numbers = {number(value, node, "input \"" + input + "\"")};
+      result.integral = value.is_number_integer() || result.numbers[0] == std::floor(result.numbers[0]);
+      return result;
+    }
+    if (value.is_array() && (value.size() == 2 || value.size() == 3)) {
+      result.kind = InputValue::Kind::array;
+      for (const json& item : value) {
+        if (!item.is_number()) fail(node, input, "array literals hold numbers only, got " + value.dump());
+        result.numbers.push_back(number(item, node, "input \"" + input + "\""));
+      }
+      return result;
+    }
+    fail(node, input,
+         "expected a node id, \"$param\", number, boolean or array of 2 or 3 numbers, got " + value.dump());
+  }
+
+  AttributeValue parse_attribute(const json& value, const std::string& node, const std::string& key) const {
+    AttributeValue result;
+    const std::string what = "attribute \"" + key + "\"";
+    if (value.is_number()) {
+      result.kind = AttributeValue::Kind::number;
+      result.number = value.get<double>();
+      if (!std::isfinite(result.number)) fail(node, {}, what + " must be finite");
+      return result;
+    }
+    if (value.is_string()) {
+      result.kind = AttributeValue::Kind::text;
+      result.text = value.get<std::string>();
+      return result;
+    }
+    if (value.is_array()) {
+      result.kind = AttributeValue::Kind::list;
+      for (const json& item : value) {
+        if (item.is_array()) {
+          result.items_are_arrays = true;
+          result.items.push_back(numbers(item, node, what + " item"));
+        } else {
+          result.items.push_back({number(item, node, what + " item")});
+        }
+      }
+      return result;
+    }
+    fail(node, {}, what + " must be a number, string or array (or did you mean to put it in \"in\"?)");
+  }
+
+  std::vector<OutputDecl> parse_outputs(const json& outputs, const std::string& scope) const {
+    if (!outputs.is_object() || outputs.empty())
+      fail({}, {}, scope + "field \"outputs\" must be a non-empty object of name: node id");
+    std::vector<OutputDecl> result;
+    for (const auto& [name, value] : outputs.items())
+      result.push_back({name, parse_input_value(value, {}, scope + "output " + name)});
+    return result;
+  }
+
+  RenderSettings parse_render(const json& render) const {
+    if (!render.is_object()) fail({}, {}, "field \"render\" must be an object");
+    check_fields(render, {"size", "domain", "z", "frame"}, {}, "render");
+    RenderSettings settings;
+    if (render.contains("size")) {
+      const json& size = render["size"];
+      if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer())
+        fail({}, {}, "render size must be [width, height] in pixels");
+      settings.width = size[0].get<int>();
+      settings.height = size[1].get<int>();
+      if (settings.width < 1 || settings.height < 1 || settings.width > max_image_side ||
+          settings.height > max_image_side)
+        fail({}, {}, "render size must be between 1 and " + std::to_string(max_image_side) + " pixels a side");
+    }
+    if (render.contains("domain")) {
+      const json& domain = render["domain"];
+      if (!domain.is_object()) fail({}, {}, "render domain must be {\"min\": [x, y], \"max\": [x, y]}");
+      check_fields(domain, {"min", "max"}, {}, "render domain");
+      for (const char* corner : {"min", "max"}) {
+        if (!domain.contains(corner)) fail({}, {}, std::string("render domain has no \"") + corner + "\"");
+        std::vector<float> values = numbers(domain[corner], {}, std::string("render domain ") + corner);
+        if (values.size() != 2) fail({}, {}, std::string("render domain ") + corner + " must be [x, y]");
+        float* target = std::string(corner) == "min" ? settings.domain_min : settings.domain_max;
+        target[0] = values[0];
+        target[1] = values[1];
+      }
+      if (settings.domain_min[0] == settings.domain_max[0] || settings.domain_min[1] == settings.domain_max[1])
+        fail({}, {}, "render domain is empty: min and max must differ in x and in y");
+    }
+    if (render.contains("z")) settings.z = number(render["z"], {}, "render z");
+    if (render.contains("frame")) settings.frame = number(render["frame"], {}, "render frame");
+    return settings;
+  }
+
+  std::string file_;
+};
+
+}  // namespace
+
+Result<Graph> parse_graph(const std::string& json_text, const std::string& file) {
+  json document;
+  try {
+    document = json::parse(json_text);
+  } catch (const json::parse_error& error) {
+    std::string reason = error.what();
+    const auto start = reason.find("parse error");
+    if (start != std::string::npos) reason = reason.substr(start);
+    return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "invalid JSON: " + reason};
+  }
+  try {
+    return Parser(file).parse(document);
+  } catch (const ParseError& error) {
+    return error.diagnostic;
+  } catch (const json::exception& error) {
+    return Diagnostic{ExitStatus::invalid_input, file, {}, {}, std::string("malformed graph: ") + error.what()};
+  }
+}
+
+Result<Graph> load_graph(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "no such file"};
+  if (std::filesystem::is_directory(path, error))
+    return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "is a directory, not a graph file"};
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) return Diagnostic{ExitStatus::failure, path, {}, {}, "cannot open file"};
+  std::ostringstream text;
+  text << stream.rdbuf();
+  if (stream.bad()) return Diagnostic{ExitStatus::failure, path, {}, {}, "cannot read file"};
+  if (text.str().size() > max_graph_file_bytes)
+    return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "file is larger than the 16 MiB limit"};
+  return parse_graph(text.str(), path);
+}
+
+}  // namespace shadetree

@@ -1,0 +1,21 @@
+// Stage 1: JSON text -> Graph. Checks the file's structure (fields, their
+// JSON types, the version); the meaning of names and types is check's job.
+#pragma once
+
+#include <string>
+
+#include "graph/diagnostic.h"
+#include "graph/graph.h"
+
+namespace shadetree {
+
+// Limits that keep a malformed or hostile file from exhausting memory.
+inline constexpr std::size_t max_graph_file_bytes = 16u << 20;
+inline constexpr std::size_t max_nodes_per_graph = 100000;
+inline constexpr int max_image_side = 16384;
+
+// `file` names the graph in messages.
+Result<Graph> parse_graph(const std::string& json_text, const std::string& file);
+Result<Graph> load_graph(const std::string& path);
+
+}  // namespace shadetree

@@ -1,0 +1,69 @@
+// ShadeIR: a flat, typed SSA program, the product of lowering and the input
+// of every backend. Instructions are plain data in a vector; value i is the
+// result of instruction i. Conditional regions (the `if` node) are
+// bracketed by begin_region / end_region so that a backend can run a
+// region only for the samples that take it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "graph/type.h"
+#include "nodes/op_id.h"
+
+namespace shadetree {
+
+enum class IrOpKind : std::uint8_t {
+  op,            // a library op: `op` says which
+  constant,      // data[data_offset ..] holds one value per component
+  param,         // the uniform param block, from slot `immediate[0]`
+  extract,       // component immediate[0] of args[0]
+  begin_region,  // run until the matching end_region only where args[0] is
+                 // true (immediate[0] = 0) or false (immediate[0] = 1);
+                 // immediate[1] is the index of the matching end_region
+  end_region,
+};
+
+struct IrInstr {
+  IrOpKind kind = IrOpKind::op;
+  OpId op = OpId::add;
+  Type type = Type::float_;
+  bool uniform = false;  // depends only on params and constants
+  std::uint8_t arg_count = 0;
+  std::array<std::int32_t, 6> args{-1, -1, -1, -1, -1, -1};
+  std::int32_t data_offset = 0;  // into ShadeIR::data
+  std::int32_t data_count = 0;
+  std::array<std::int32_t, 2> immediate{0, 0};
+  std::string source;  // the graph node it came from, for emit and messages
+};
+
+struct IrOutput {
+  std::string name;
+  Type type;
+  std::int32_t value;
+};
+
+struct IrParam {
+  std::string name;
+  Type type;
+  std::int32_t slot;  // first float of the param in the uniform block
+};
+
+struct ShadeIR {
+  std::vector<IrInstr> code;
+  std::vector<float> data;
+  std::vector<IrOutput> outputs;
+  std::vector<IrParam> params;
+  int param_block_size = 0;  // floats
+};
+
+// Keeps the instructions listed in `order` (old indices, each argument
+// before its users), renumbering arguments and outputs.
+void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order);
+
+// Human-readable listing, one instruction a line (shadetree emit --graph).
+std::string format_shade_ir(const ShadeIR& ir);
+
+}  // namespace shadetree

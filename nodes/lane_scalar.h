@@ -1,0 +1,53 @@
+// Lane primitives for one sample at a time: F = float, I = int32_t, M = bool.
+//
+// Node semantics (nodes/semantics/) are written once, as templates over a
+// lane type F, using only these primitives: arithmetic, compares, select,
+// floor, gather from a table, and any() for loops with a per-lane trip
+// count. The interpreter instantiates them with F = float. A vector backend
+// declares the same names for its vector types before including the
+// semantics, so both compute the same operations in the same order.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+namespace shadetree::lanes {
+
+inline float select(bool mask, float a, float b) { return mask ? a : b; }
+inline std::int32_t select(bool mask, std::int32_t a, std::int32_t b) { return mask ? a : b; }
+inline bool any(bool mask) { return mask; }
+inline bool both(bool a, bool b) { return a && b; }
+inline bool either(bool a, bool b) { return a || b; }
+inline bool negate(bool a) { return !a; }
+
+inline float floor(float x) { return std::floor(x); }
+inline float abs(float x) { return std::fabs(x); }
+inline float sqrt(float x) { return std::sqrt(x); }
+inline float pow(float x, float y) { return std::pow(x, y); }
+inline float exp(float x) { return std::exp(x); }
+inline float log(float x) { return std::log(x); }
+inline float sin(float x) { return std::sin(x); }
+inline float cos(float x) { return std::cos(x); }
+inline float min(float a, float b) { return a < b ? a : b; }
+inline float max(float a, float b) { return a > b ? a : b; }
+inline std::int32_t min(std::int32_t a, std::int32_t b) { return a < b ? a : b; }
+inline std::int32_t max(std::int32_t a, std::int32_t b) { return a > b ? a : b; }
+
+// x must already be integral and within int32 range.
+inline std::int32_t to_int(float x) { return static_cast<std::int32_t>(x); }
+inline float to_float(std::int32_t i) { return static_cast<float>(i); }
+
+inline float gather(const float* table, std::int32_t index) { return table[index]; }
+inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { return table[index]; }
+
+template <class F>
+using IntOf = decltype(to_int(F{}));
+template <class F>
+using MaskOf = decltype(F{} < F{});
+
+template <class F>
+F splat(float value) {
+  return F{} + value;
+}
+
+}  // namespace shadetree::lanes

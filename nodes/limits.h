@@ -1,0 +1,11 @@
+// Limits the type checker enforces and the semantics rely on (documented
+// in docs/graph-format.md).
+#pragma once
+
+namespace shadetree {
+
+inline constexpr int max_octaves = 16;
+inline constexpr int max_julia_iterations = 1024;
+inline constexpr int max_table_entries = 4096;
+
+}  // namespace shadetree

@@ -1,0 +1,193 @@
+// Noise generators, written once over a lane type F (see nodes/lane_scalar.h).
+#pragma once
+
+#include "nodes/lane_scalar.h"
+#include "nodes/limits.h"
+#include "nodes/noise_tables.h"
+#include "nodes/semantics/vec3.h"
+
+namespace shadetree::semantics {
+
+using namespace shadetree::lanes;
+
+// Perlin & Hoffert 1989 section 2.3: the drop-off 2|t|^3 - 3|t|^2 + 1.
+template <class F>
+F noise_weight(F t) {
+  F a = abs(t);
+  return (a * 2.0f - 3.0f) * a * a + 1.0f;
+}
+
+// d/dt of noise_weight: 6 t |t| - 6 t.
+template <class F>
+F noise_weight_derivative(F t) {
+  return t * (abs(t) - 1.0f) * 6.0f;
+}
+
+// phi(i) = P[i mod n]; n = 256 so the mod is a mask (also for negative i).
+template <class I>
+I noise_phi(const NoiseTables& tables, I i) {
+  return gather(tables.permutation.data(), i & (noise_table_size - 1));
+}
+
+// The lattice cell of a coordinate: floor(x) for the offsets, and floor(x)
+// mod n as an integer for the hash. Reducing mod n in float first keeps the
+// conversion to int defined however large x is (floats above 2^24 are
+// integers, so the reduction is exact).
+template <class F>
+struct LatticeCoordinate {
+  F cell;               // floor(x)
+  IntOf<F> hash_index;  // floor(x) mod n
+};
+
+template <class F>
+LatticeCoordinate<F> lattice_coordinate(F x) {
+  F cell = floor(x);
+  F wrapped = cell - floor(cell * (1.0f / noise_table_size)) * float(noise_table_size);
+  return {cell, to_int(wrapped)};
+}
+
+// Visits the 2^3 knots around p (1989 section 2.3), giving each one's
+// gradient index phi(i + phi(j + phi(k))) and offset (u, v, w) = p - (i,j,k).
+template <class F, class Visit>
+void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) {
+  auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
+  F fx = x - lx.cell, fy = y - ly.cell, fz = z - lz.cell;
+  for (int dk = 0; dk < 2; ++dk) {
+    auto hash_k = noise_phi(tables, lz.hash_index + dk);
+    F w = fz - float(dk);
+    for (int dj = 0; dj < 2; ++dj) {
+      auto hash_jk = noise_phi(tables, ly.hash_index + dj + hash_k);
+      F v = fy - float(dj);
+      for (int di = 0; di < 2; ++di) {
+        auto gradient_index = noise_phi(tables, lx.hash_index + di + hash_jk);
+        F u = fx - float(di);
+        visit(gradient_index, u, v, w);
+      }
+    }
+  }
+}
+
+// noise(x,y,z) = sum over the 8 knots of w(u) w(v) w(w) (G . (u,v,w)).
+template <class F>
+F noise(const NoiseTables& tables, F x, F y, F z) {
+  F sum = splat<F>(0.0f);
+  for_each_noise_knot(tables, x, y, z, [&](auto index, F u, F v, F w) {
+    F slope = gather(tables.gradient_x.data(), index) * u + gather(tables.gradient_y.data(), index) * v +
+              gather(tables.gradient_z.data(), index) * w;
+    sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
+  });
+  return sum;
+}
+
+// The analytic gradient of noise (Perlin 1985 Dnoise): product rule on
+// each knot's w(u) w(v) w(w) (G . (u,v,w)).
+template <class F>
+Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
+  Vec3<F> sum{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
+  for_each_noise_knot(tables, x, y, z, [&](auto index, F u, F v, F w) {
+    F gx = gather(tables.gradient_x.data(), index);
+    F gy = gather(tables.gradient_y.data(), index);
+    F gz = gather(tables.gradient_z.data(), index);
+    F slope = gx * u + gy * v + gz * w;
+    F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
+    F weight = wu * wv * ww;
+    sum.x = sum.x + noise_weight_derivative(u) * wv * ww * slope + weight * gx;
+    sum.y = sum.y + wu * noise_weight_derivative(v) * ww * slope + weight * gy;
+    sum.z = sum.z + wu * wv * noise_weight_derivative(w) * slope + weight * gz;
+  });
+  return sum;
+}
+
+// 1989 section 2.4: sigma is far enough apart (and not a multiple of the
+// 256-cell period) that the three calls meet unrelated knots.
+inline constexpr float vector_noise_offset[3] = {113.5f, 271.25f, 37.75f};
+
+template <class F>
+Vec3<F> vnoise(const NoiseTables& tables, F x, F y, F z) {
+  const float* s = vector_noise_offset;
+  return {noise(tables, x - s[0], y - s[1], z - s[2]), noise(tables, x, y, z),
+          noise(tables, x + s[0], y + s[1], z + s[2])};
+}
+
+// Perlin 2002, "Improving Noise": the fade curve 6t^5 - 15t^4 + 10t^3.
+template <class F>
+F improved_fade(F t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
+
+template <class F>
+F improved_lerp(F t, F a, F b) {
+  return a + t * (b - a);
+}
+
+// One of 12 edge directions of the cube, picked by the low 4 bits of hash.
+template <class F, class I>
+F improved_gradient(I hash, F x, F y, F z) {
+  I h = hash & 15;
+  F u = select(h < 8, x, y);
+  F v = select(h < 4, y, select(either(h == 12, h == 14), x, z));
+  return select((h & 1) == 0, u, -u) + select((h & 2) == 0, v, -v);
+}
+
+// Follows the structure of Perlin's 2002 reference implementation exactly.
+template <class F>
+F noise_improved(F x, F y, F z) {
+  const std::int32_t* p = improved_noise_permutation.data();
+  auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
+  auto X = lx.hash_index, Y = ly.hash_index, Z = lz.hash_index;
+  x = x - lx.cell;
+  y = y - ly.cell;
+  z = z - lz.cell;
+  F u = improved_fade(x), v = improved_fade(y), w = improved_fade(z);
+  auto A = gather(p, X) + Y, AA = gather(p, A) + Z, AB = gather(p, A + 1) + Z;
+  auto B = gather(p, X + 1) + Y, BA = gather(p, B) + Z, BB = gather(p, B + 1) + Z;
+  return improved_lerp(
+      w,
+      improved_lerp(v,
+                    improved_lerp(u, improved_gradient(gather(p, AA), x, y, z),
+                                  improved_gradient(gather(p, BA), x - 1.0f, y, z)),
+                    improved_lerp(u, improved_gradient(gather(p, AB), x, y - 1.0f, z),
+                                  improved_gradient(gather(p, BB), x - 1.0f, y - 1.0f, z))),
+      improved_lerp(v,
+                    improved_lerp(u, improved_gradient(gather(p, AA + 1), x, y, z - 1.0f),
+                                  improved_gradient(gather(p, BA + 1), x - 1.0f, y, z - 1.0f)),
+                    improved_lerp(u, improved_gradient(gather(p, AB + 1), x, y - 1.0f, z - 1.0f),
+                                  improved_gradient(gather(p, BB + 1), x - 1.0f, y - 1.0f, z - 1.0f))));
+}
+
+// Octave i (scale 2^-i) takes part while i < octaves and, as in the loop
+// "while (scale > pixelsize)" of the 1985 appendix, scale > filter_width.
+// The trip count differs per lane, so lanes drop out through a mask.
+template <class F>
+F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width) {
+  F sum = splat<F>(0.0f);
+  float scale = 1.0f;
+  for (int octave = 0; octave < max_octaves; ++octave, scale *= 0.5f) {
+    auto active = both(splat<F>(float(octave)) < octaves, splat<F>(scale) > filter_width);
+    if (!any(active)) break;
+    float frequency = 1.0f / scale;  // a power of two: p * frequency is exact
+    F n = noise(tables, x * frequency, y * frequency, z * frequency);
+    sum = sum + select(active, abs(n) * scale, splat<F>(0.0f));
+  }
+  return sum;
+}
+
+// Fractional Brownian motion: octave i has frequency lacunarity^i and
+// amplitude gain^i; it takes part while 1 / frequency > filter_width.
+template <class F>
+F fbm(const NoiseTables& tables, F x, F y, F z, F octaves, F lacunarity, F gain, F filter_width) {
+  F sum = splat<F>(0.0f);
+  F frequency = splat<F>(1.0f);
+  F amplitude = splat<F>(1.0f);
+  for (int octave = 0; octave < max_octaves; ++octave) {
+    auto active = both(splat<F>(float(octave)) < octaves, frequency * filter_width < 1.0f);
+    if (!any(active)) break;
+    F n = noise(tables, x * frequency, y * frequency, z * frequency);
+    sum = sum + select(active, n * amplitude, splat<F>(0.0f));
+    frequency = frequency * lacunarity;
+    amplitude = amplitude * gain;
+  }
+  return sum;
+}
+
+}  // namespace shadetree::semantics

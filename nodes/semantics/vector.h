@@ -1,0 +1,23 @@
+// Vector operators over 2 or 3 components, written once over a lane type F.
+#pragma once
+
+#include "nodes/lane_scalar.h"
+#include "nodes/semantics/vec3.h"
+
+namespace shadetree::semantics {
+
+using namespace shadetree::lanes;
+
+template <class F>
+Vec3<F> cross(const Vec3<F>& a, const Vec3<F>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// 1 / |v|, or 0 for the zero vector, so normalize(0) = 0 rather than NaN.
+template <class F>
+F inverse_length_or_zero(F length_squared) {
+  F length = sqrt(length_squared);
+  return select(length > 0.0f, 1.0f / select(length > 0.0f, length, splat<F>(1.0f)), splat<F>(0.0f));
+}
+
+}  // namespace shadetree::semantics

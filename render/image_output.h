@@ -1,0 +1,20 @@
+// Image files through OpenImageIO. Writes go to a temporary file in the
+// target's folder that is renamed over the target only once complete, so a
+// failed render never leaves a partial or corrupt image behind.
+#pragma once
+
+#include <string>
+
+#include "graph/diagnostic.h"
+#include "render/texture_driver.h"
+
+namespace shadetree {
+
+// PNG (8-bit, values clamped to [0,1]) or EXR (half float, unclamped),
+// chosen by the extension of `path`.
+Status write_image(const Image& image, const std::string& path);
+
+// For tests and tools: reads any OpenImageIO format as float pixels.
+Result<Image> read_image(const std::string& path);
+
+}  // namespace shadetree

@@ -1,0 +1,29 @@
+#include "render/progress.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace shadetree {
+
+ProgressReporter::ProgressReporter(std::string label)
+    : label_(std::move(label)), start_(std::chrono::steady_clock::now()), enabled_(::isatty(2) != 0) {}
+
+ProgressReporter::~ProgressReporter() {
+  if (shown_) std::fprintf(stderr, "\r\033[K");
+}
+
+void ProgressReporter::update(double fraction_done) {
+  if (!enabled_) return;
+  const auto elapsed = std::chrono::steady_clock::now() - start_;
+  if (elapsed < std::chrono::seconds(1)) return;
+  std::lock_guard lock(mutex_);
+  const int percent = static_cast<int>(fraction_done * 100.0);
+  if (percent == last_percent_) return;
+  last_percent_ = percent;
+  shown_ = true;
+  std::fprintf(stderr, "\r%s %3d%%", label_.c_str(), percent);
+  std::fflush(stderr);
+}
+
+}  // namespace shadetree

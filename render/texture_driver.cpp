@@ -1,0 +1,150 @@
+// The texture driver. P comes from the pixel centre through the view's
+// domain transform, uv from the pixel's place in the image, and
+// filter_width is the pixel's size in the units of P (the "pixelsize" of
+// Perlin 1985's turbulence loop). Tiles are independent kernel calls, so
+// the image is the same whatever the thread count.
+#include "render/texture_driver.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+namespace shadetree {
+namespace {
+
+constexpr int tile_size = 64;
+
+int find_output(const ShadeIR& ir, const char* name) {
+  for (std::size_t i = 0; i < ir.outputs.size(); ++i)
+    if (ir.outputs[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int first_plane(const ShadeIR& ir, int output) {
+  int plane = 0;
+  for (int i = 0; i < output; ++i) plane += component_count(ir.outputs[i].type);
+  return plane;
+}
+
+}  // namespace
+
+TextureView TextureView::from_settings(const RenderSettings& settings) {
+  TextureView view;
+  view.width = settings.width;
+  view.height = settings.height;
+  std::copy(settings.domain_min, settings.domain_min + 2, view.domain_min);
+  std::copy(settings.domain_max, settings.domain_max + 2, view.domain_max);
+  view.z = settings.z;
+  view.frame = settings.frame;
+  return view;
+}
+
+TextureSample texture_sample_at_point(const TextureView& view, const float P[3]) {
+  const float span_x = view.domain_max[0] - view.domain_min[0];
+  const float span_y = view.domain_max[1] - view.domain_min[1];
+  TextureSample sample;
+  std::copy(P, P + 3, sample.P);
+  sample.uv[0] = (P[0] - view.domain_min[0]) / span_x;
+  sample.uv[1] = (P[1] - view.domain_min[1]) / span_y;
+  sample.filter_width = std::max(std::fabs(span_x) / view.width, std::fabs(span_y) / view.height);
+  return sample;
+}
+
+TextureSample texture_sample_at_pixel(const TextureView& view, int column, int row) {
+  const float u = (static_cast<float>(column) + 0.5f) / static_cast<float>(view.width);
+  const float v = 1.0f - (static_cast<float>(row) + 0.5f) / static_cast<float>(view.height);
+  const float P[3] = {view.domain_min[0] + u * (view.domain_max[0] - view.domain_min[0]),
+                      view.domain_min[1] + v * (view.domain_max[1] - view.domain_min[1]), view.z};
+  TextureSample sample = texture_sample_at_point(view, P);
+  sample.uv[0] = u;
+  sample.uv[1] = v;
+  return sample;
+}
+
+Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
+                             const TextureRenderOptions& options) {
+  const ShadeIR& ir = kernel.ir();
+  const int color = find_output(ir, "color");
+  if (color < 0) return invalid_input("a texture graph needs an output \"color\"");
+  const int alpha = find_output(ir, "alpha");
+  if (alpha >= 0 && component_count(ir.outputs[alpha].type) != 1)
+    return invalid_input("output \"alpha\" must be a float");
+  int total_planes = 0;
+  for (const IrOutput& output : ir.outputs) total_planes += component_count(output.type);
+  const int color_components = component_count(ir.outputs[color].type);
+
+  Image image;
+  image.width = view.width;
+  image.height = view.height;
+  image.channels = alpha >= 0 ? 4 : 3;
+  image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * image.channels, 0.0f);
+
+  const int tiles_x = (view.width + tile_size - 1) / tile_size;
+  const int tiles_y = (view.height + tile_size - 1) / tile_size;
+  std::atomic<int> tiles_done{0};
+  const int tile_count = tiles_x * tiles_y;
+
+  auto render_tile = [&](int tile_x, int tile_y) {
+    const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
+    const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
+    const std::size_t count = static_cast<std::size_t>(w) * h;
+    // Planes: P xyz, N xyz, uv, filter_width, density, then the outputs.
+    std::vector<float> buffer(count * (10 + static_cast<std::size_t>(total_planes)));
+    auto plane = [&](int index) { return buffer.data() + count * static_cast<std::size_t>(index); };
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const TextureSample sample = texture_sample_at_pixel(view, x0 + x, y0 + y);
+        for (int c = 0; c < 3; ++c) plane(c)[i] = sample.P[c];
+        plane(5)[i] = 1.0f;  // N = +z, facing the viewer
+        plane(6)[i] = sample.uv[0];
+        plane(7)[i] = sample.uv[1];
+        plane(8)[i] = sample.filter_width;
+      }
+    }
+    KernelInputs inputs;
+    for (int c = 0; c < 3; ++c) {
+      inputs.P[c] = plane(c);
+      inputs.N[c] = plane(3 + c);
+    }
+    inputs.uv[0] = plane(6);
+    inputs.uv[1] = plane(7);
+    inputs.filter_width = plane(8);
+    inputs.density = plane(9);
+    inputs.frame = view.frame;
+    inputs.time = view.frame / frames_per_second;
+    std::vector<float*> outputs;
+    for (int p = 0; p < total_planes; ++p) outputs.push_back(plane(10 + p));
+    kernel.run(params.data(), inputs, outputs.data(), count);
+
+    const int color_plane = 10 + first_plane(ir, color);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        float* pixel = image.pixels.data() +
+                       (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
+        for (int c = 0; c < 3; ++c) pixel[c] = plane(color_plane + std::min(c, color_components - 1))[i];
+        if (alpha >= 0) pixel[3] = plane(10 + first_plane(ir, alpha))[i];
+      }
+    }
+    const int done = ++tiles_done;
+    if (options.progress) options.progress(static_cast<double>(done) / tile_count);
+  };
+
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
+                      [&](const tbb::blocked_range2d<int>& range) {
+                        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
+                          for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) render_tile(tx, ty);
+                      });
+  });
+  return image;
+}
+
+}  // namespace shadetree

@@ -1,0 +1,55 @@
+// The 2D texture driver: evaluates a texture graph over an image grid, in
+// parallel over tiles, through the Kernel interface.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "graph/diagnostic.h"
+#include "graph/graph.h"
+#include "graph/kernel.h"
+
+namespace shadetree {
+
+struct TextureView {
+  int width = 512;
+  int height = 512;
+  float domain_min[2] = {0.0f, 0.0f};  // P.xy at the lower-left image corner
+  float domain_max[2] = {1.0f, 1.0f};  // P.xy at the upper-right image corner
+  float z = 0.0f;
+  float frame = 0.0f;
+
+  static TextureView from_settings(const RenderSettings& settings);
+};
+
+// What the texture driver feeds a kernel for one point of the view.
+struct TextureSample {
+  float P[3];
+  float uv[2];
+  float filter_width;
+};
+
+// Pixel (column, row), row 0 at the top, sampled at its centre.
+TextureSample texture_sample_at_pixel(const TextureView& view, int column, int row);
+// Any point: uv from its place in the domain, filter_width from pixel size.
+TextureSample texture_sample_at_point(const TextureView& view, const float P[3]);
+
+inline constexpr float frames_per_second = 24.0f;
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  int channels = 0;           // 3 (rgb) or 4 (rgba)
+  std::vector<float> pixels;  // row-major, top row first, interleaved
+};
+
+struct TextureRenderOptions {
+  int threads = 0;  // 0: all cores
+  std::function<void(double fraction_done)> progress;  // may be empty
+};
+
+// Output "color" (color or float, shown as grey) and optional "alpha".
+Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
+                             const TextureRenderOptions& options);
+
+}  // namespace shadetree
