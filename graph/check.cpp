@@ -266,6 +266,7 @@ class Checker {
     checked.op = callee.op;
     checked.function = callee.function;
 
+    if (callee.op) check_attributes(node, *callee.op, checked);
     std::vector<std::string> port_names;
     for (const PortSpec& port : callee.inputs) port_names.push_back(port.name);
     std::vector<std::optional<CheckedSource>> given(callee.inputs.size());
@@ -289,11 +290,8 @@ class Checker {
       given[i] = source;
     }
 
-    if (callee.op) {
-      check_attributes(node, *callee.op, checked);
-      if (callee.op->generic != GenericSet::none)
-        checked.generic_type = infer_generic_type(node, *callee.op, callee.inputs, given, checked.generic_type);
-    }
+    if (callee.op && callee.op->generic != GenericSet::none)
+      checked.generic_type = infer_generic_type(node, *callee.op, callee.inputs, given, checked.generic_type);
     for (std::size_t i = 0; i < callee.inputs.size(); ++i) {
       const PortSpec& port = callee.inputs[i];
       const Type target = port.rule == TypeRule::generic ? checked.generic_type : port.type;
@@ -533,7 +531,7 @@ class Checker {
 
 std::vector<RequiredOutput> required_outputs(const std::string& kind) {
   if (kind == "volume") return {{"density", {Type::float_}}};
-  return {{"color", {Type::color, Type::float_}}};
+  return {{"color", {Type::color, Type::vec3, Type::float_}}};
 }
 
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph) {

@@ -1,0 +1,176 @@
+// Every error class of parse and check produces its one-line message.
+#include <gtest/gtest.h>
+
+#include "graph/check.h"
+#include "graph/parse.h"
+#include "support/graph_text.h"
+
+namespace shadetree {
+namespace {
+
+using testing::graph_text;
+
+// The message of the first error in the text, or "ok".
+std::string diagnose(const std::string& text) {
+  Result<Graph> parsed = parse_graph(text, "g.json");
+  if (!parsed) return parsed.error().to_string();
+  Result<CheckedGraph> checked = check_graph(std::make_shared<const Graph>(*parsed));
+  if (!checked) return checked.error().to_string();
+  return "ok";
+}
+
+const std::string color_out = R"("color": "c")";
+
+TEST(Check, AcceptsAWellTypedGraph) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "n", "op": "noise", "in": {"p": "p"}},
+                                   {"id": "c", "op": "mul", "in": {"a": "n", "b": [1, 0.5, 0.2]}})",
+                                color_out)),
+            "ok");
+}
+
+TEST(Check, ReportsInvalidJsonWithItsPosition) {
+  EXPECT_EQ(diagnose("{\"format\": }").rfind("error: g.json: invalid JSON: parse error at line 1, column 12", 0), 0u);
+}
+
+TEST(Check, ReportsWrongFormatAndNewerVersions) {
+  EXPECT_EQ(diagnose(R"({"format": "x", "version": 1})"),
+            "error: g.json: field \"format\" must be \"shadetree-graph\", got \"x\"");
+  EXPECT_EQ(diagnose(R"({"format": "shadetree-graph", "version": 9, "kind": "texture"})"),
+            "error: g.json: version 9 is not supported (this shadetree reads version 1)");
+}
+
+TEST(Check, ReportsTypeMismatchWithNodeAndInput) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "t", "op": "time"}, {"id": "c", "op": "noise", "in": {"p": "uv"}},
+                                   {"id": "uv", "op": "uv"})",
+                                color_out)),
+            "error: g.json: node \"c\" input \"p\": expected vec3, got vec2");
+}
+
+TEST(Check, RejectsAddingVec2ToVec3) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "uv", "op": "uv"},
+                                   {"id": "c", "op": "add", "in": {"a": "p", "b": "uv"}})",
+                                color_out)),
+            "error: g.json: node \"c\" input \"b\": expected vec3 (like input \"a\"), got vec2");
+}
+
+TEST(Check, PromotesFloatsToVectors) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "s", "op": "add", "in": {"a": 1.5, "b": "p"}},
+                                   {"id": "c", "op": "to_color", "in": {"v": "s"}})",
+                                color_out)),
+            "ok");
+}
+
+TEST(Check, ReportsUnknownOps) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "nosie"})", color_out)),
+            "error: g.json: node \"c\": unknown op \"nosie\" (see `shadetree nodes` for the library)");
+}
+
+TEST(Check, ReportsDuplicateIds) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "P"}, {"id": "c", "op": "N"})", color_out)),
+            "error: g.json: node \"c\": duplicate node id");
+}
+
+TEST(Check, ReportsDanglingReferences) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "noise", "in": {"p": "q"}})", color_out)),
+            "error: g.json: node \"c\" input \"p\": no node \"q\"");
+}
+
+TEST(Check, ReportsCyclesWithTheirPath) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "a", "op": "add", "in": {"a": "b", "b": 1}},
+                                   {"id": "b", "op": "add", "in": {"a": "a", "b": 1}},
+                                   {"id": "c", "op": "color", "in": {"r": "a"}})",
+                                color_out)),
+            "error: g.json: node \"a\": cycle: a -> b -> a");
+}
+
+TEST(Check, ReportsMissingOutputs) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("other": "p")")),
+            "error: g.json: a texture graph needs an output \"color\"");
+  EXPECT_NE(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p")", "", "volume"))
+                .find("needs an output \"density\""),
+            std::string::npos);
+}
+
+TEST(Check, ReportsWrongLiteralTypes) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "c", "op": "turbulence", "in": {"p": "p", "octaves": 2.5}})",
+                                color_out)),
+            "error: g.json: node \"c\" input \"octaves\": expected int, got non-integral number 2.5");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "noise", "in": {"p": true}})", color_out)),
+            "error: g.json: node \"c\" input \"p\": expected vec3, got bool");
+}
+
+TEST(Check, ReportsUnknownParamsAndInputs) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "mul", "in": {"a": "$nope", "b": 1}})", color_out)),
+            "error: g.json: node \"c\" input \"a\": unknown param \"$nope\"");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "mul", "in": {"a": 1, "c": 1}})", color_out)),
+            "error: g.json: node \"c\" input \"c\": unknown input (inputs of mul: a, b)");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "mul", "in": {"a": 1}})", color_out)),
+            "error: g.json: node \"c\" input \"b\": missing input (it has no default)");
+}
+
+TEST(Check, ReportsOutOfRangeParams) {
+  const std::string params = R"("params": {"k": {"type": "float", "default": 5, "min": 0, "max": 2}},)";
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "mul", "in": {"a": "$k", "b": 1}})", color_out, params)),
+            "error: g.json: param \"k\": 5 is above the maximum 2");
+}
+
+TEST(Check, ReportsOctavesBeyondTheLimit) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "c", "op": "turbulence", "in": {"p": "p", "octaves": 40}})",
+                                color_out)),
+            "error: g.json: node \"c\" input \"octaves\": octaves must be between 0 and 16, got 40");
+  const std::string params = R"("params": {"o": {"type": "int", "default": 4, "max": 64}},)";
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "c", "op": "fbm", "in": {"p": "p", "octaves": "$o"}})",
+                                color_out, params)),
+            "error: g.json: node \"c\" input \"octaves\": octaves must be between 0 and 16, got 64");
+}
+
+TEST(Check, ReportsBadAttributes) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "spline", "in": {"x": 0.5}, "knots": [1, 2]})", color_out)),
+            "error: g.json: node \"c\": attribute \"knots\" needs 4 to 4096 values, got 2");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "spline", "in": {"x": 0.5}, "knots": [1, 2], "basis": "cubic"})",
+                                color_out)),
+            "error: g.json: node \"c\": attribute \"basis\" must be one of: catmull-rom, linear, step");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "noise", "p": [1, 2, 3]})", color_out)),
+            "error: g.json: node \"c\": unknown field \"p\" (inputs go in \"in\"; attributes of noise: seed)");
+}
+
+TEST(Check, SplineTypeFollowsItsKnots) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "spline", "in": {"x": 0.5}, "basis": "linear",
+                                    "knots": [[0, 0, 0], [1, 1, 1]]})",
+                                color_out)),
+            "ok");
+}
+
+TEST(Check, ChecksFunctionsAndTheirCalls) {
+  const std::string functions = R"("functions": {"twice": {"inputs": {"x": "float"},
+      "nodes": [{"id": "d", "op": "mul", "in": {"a": "$x", "b": 2}}], "outputs": {"y": "d"}}},)";
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "t", "op": "twice", "in": {"x": 0.25}},
+                                   {"id": "c", "op": "color", "in": {"r": "t.y"}})",
+                                color_out, functions)),
+            "ok");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "t", "op": "twice", "in": {"x": "p"}},
+                                   {"id": "c", "op": "color", "in": {"r": "t"}})",
+                                color_out, functions)),
+            "error: g.json: node \"t\" input \"x\": expected float, got vec3");
+  const std::string recursive = R"("functions": {"f": {"inputs": {"x": "float"},
+      "nodes": [{"id": "d", "op": "f", "in": {"x": "$x"}}], "outputs": {"y": "d"}}},)";
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "f", "in": {"x": 1}})", color_out, recursive)),
+            "error: g.json: function \"f\" calls itself (directly or through other functions)");
+}
+
+TEST(Check, DensityIsOnlyForVolumes) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "density"})", color_out)),
+            "error: g.json: node \"c\": op \"density\" is only available in volume graphs, this is a texture graph");
+}
+
+TEST(ParamValue, ParsesAndRangeChecksSetValues) {
+  ParamDecl param{"k", Type::vec3, {0, 0, 0}, 0.0f, 10.0f, {}};
+  EXPECT_EQ(*parse_param_value(param, "1,2,3"), (std::vector<float>{1, 2, 3}));
+  EXPECT_EQ(*parse_param_value(param, "4"), (std::vector<float>{4, 4, 4}));
+  EXPECT_EQ(parse_param_value(param, "1,2").error().message,
+            "param \"k\": expected 3 comma-separated numbers for vec3, got \"1,2\"");
+  EXPECT_EQ(parse_param_value(param, "1,2,30").error().message, "param \"k\": 30 is above the maximum 10");
+}
+
+}  // namespace
+}  // namespace shadetree

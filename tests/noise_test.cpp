@@ -1,0 +1,136 @@
+// Noise generators against the properties Perlin 1985 / Perlin & Hoffert
+// 1989 state, and Perlin 2002's reference implementation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "nodes/semantics/noise.h"
+
+namespace shadetree::semantics {
+namespace {
+
+const NoiseTables& tables() { return noise_tables(default_noise_seed); }
+
+// A fixed pseudo-random walk through space, reproducible across runs.
+struct SamplePoints {
+  std::uint32_t state = 12345;
+  float next(float range) {
+    state = state * 1664525u + 1013904223u;
+    return (static_cast<float>(state >> 8) / 16777216.0f * 2.0f - 1.0f) * range;
+  }
+};
+
+TEST(NoiseTables, PermutationIsAPermutation) {
+  const auto& permutation = tables().permutation;
+  std::set<int> values(permutation.begin(), permutation.end());
+  EXPECT_EQ(values.size(), 256u);
+  EXPECT_EQ(*values.begin(), 0);
+  EXPECT_EQ(*values.rbegin(), 255);
+}
+
+TEST(NoiseTables, GradientsAreUnitVectors) {
+  for (int i = 0; i < noise_table_size; ++i) {
+    const float x = tables().gradient_x[i], y = tables().gradient_y[i], z = tables().gradient_z[i];
+    EXPECT_NEAR(x * x + y * y + z * z, 1.0f, 1e-6f) << "gradient " << i;
+  }
+}
+
+TEST(NoiseTables, SeedsGiveDifferentTablesAndTheSameSeedTheSame) {
+  EXPECT_EQ(make_noise_tables(7).permutation, make_noise_tables(7).permutation);
+  EXPECT_NE(make_noise_tables(7).permutation, make_noise_tables(8).permutation);
+}
+
+// Each knot's linear gradient is zero at its own lattice point and the
+// other knots' weights are zero there, so noise vanishes on the lattice.
+TEST(Noise, IsZeroOnTheIntegerLattice) {
+  for (int i = -3; i <= 3; ++i)
+    for (int j = -3; j <= 3; ++j)
+      for (int k : {-300, -1, 0, 1, 17, 10000}) EXPECT_EQ(noise(tables(), float(i), float(j), float(k)), 0.0f);
+}
+
+TEST(Noise, IsBoundedAndNotConstant) {
+  SamplePoints points;
+  float low = 0, high = 0;
+  for (int n = 0; n < 200000; ++n) {
+    const float value = noise(tables(), points.next(50), points.next(50), points.next(50));
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  EXPECT_GE(low, -1.0f);
+  EXPECT_LE(high, 1.0f);
+  EXPECT_LT(low, -0.4f);
+  EXPECT_GT(high, 0.4f);
+}
+
+TEST(Noise, IsPeriodicWithTheTableSize) {
+  EXPECT_NEAR(noise(tables(), 0.3f, 1.7f, 2.2f), noise(tables(), 256.3f, 1.7f, 2.2f), 1e-4f);
+}
+
+TEST(Noise, HandlesHugeAndNegativeCoordinates) {
+  EXPECT_TRUE(std::isfinite(noise(tables(), 3e9f, -7e12f, 1e30f)));
+  EXPECT_TRUE(std::isfinite(noise(tables(), -0.5f, -1e4f, -123.25f)));
+}
+
+TEST(Dnoise, AgreesWithFiniteDifferences) {
+  SamplePoints points;
+  const float h = 1e-2f;
+  for (int n = 0; n < 500; ++n) {
+    const float x = points.next(8), y = points.next(8), z = points.next(8);
+    const Vec3<float> gradient = dnoise(tables(), x, y, z);
+    // Central differences in double around the float point.
+    auto at = [&](float dx, float dy, float dz) { return double(noise(tables(), x + dx, y + dy, z + dz)); };
+    EXPECT_NEAR(gradient.x, (at(h, 0, 0) - at(-h, 0, 0)) / (2 * h), 2e-2) << x << "," << y << "," << z;
+    EXPECT_NEAR(gradient.y, (at(0, h, 0) - at(0, -h, 0)) / (2 * h), 2e-2) << x << "," << y << "," << z;
+    EXPECT_NEAR(gradient.z, (at(0, 0, h) - at(0, 0, -h)) / (2 * h), 2e-2) << x << "," << y << "," << z;
+  }
+}
+
+// On the lattice only the knot's own gradient survives.
+TEST(Dnoise, EqualsTheKnotGradientOnTheLattice) {
+  const Vec3<float> at_origin = dnoise(tables(), 0.0f, 0.0f, 0.0f);
+  const int index = tables().permutation[tables().permutation[tables().permutation[0]]];
+  EXPECT_FLOAT_EQ(at_origin.x, tables().gradient_x[index]);
+  EXPECT_FLOAT_EQ(at_origin.y, tables().gradient_y[index]);
+  EXPECT_FLOAT_EQ(at_origin.z, tables().gradient_z[index]);
+}
+
+TEST(Vnoise, MiddleComponentIsNoiseAndOthersAreOffsetNoise) {
+  const Vec3<float> v = vnoise(tables(), 0.3f, 0.6f, 0.9f);
+  EXPECT_EQ(v.y, noise(tables(), 0.3f, 0.6f, 0.9f));
+  EXPECT_EQ(v.x, noise(tables(), 0.3f - vector_noise_offset[0], 0.6f - vector_noise_offset[1],
+                       0.9f - vector_noise_offset[2]));
+  EXPECT_NE(v.x, v.y);
+  EXPECT_NE(v.z, v.y);
+}
+
+// Values of Perlin's 2002 reference implementation (Java, in double).
+TEST(NoiseImproved, MatchesThePublishedReference) {
+  EXPECT_NEAR(noise_improved(3.14f, 42.0f, 7.0f), 0.13691995878400012, 2e-6);
+  EXPECT_EQ(noise_improved(1.0f, 2.0f, 3.0f), 0.0f);
+}
+
+TEST(Turbulence, OneOctaveIsAbsoluteNoise) {
+  EXPECT_EQ(turbulence(tables(), 0.3f, 0.4f, 0.5f, 1.0f, 0.0f), std::fabs(noise(tables(), 0.3f, 0.4f, 0.5f)));
+}
+
+// 1985 appendix: octave i (scale 2^-i) is included while scale > pixelsize.
+TEST(Turbulence, StopsAtTheFilterWidth) {
+  const float x = 0.3f, y = 0.4f, z = 0.5f;
+  float expected = 0.0f;
+  for (int i = 0; i < 3; ++i) {
+    const float frequency = float(1 << i);
+    expected += std::fabs(noise(tables(), x * frequency, y * frequency, z * frequency)) / frequency;
+  }
+  EXPECT_FLOAT_EQ(turbulence(tables(), x, y, z, 16.0f, 0.2f), expected);  // scales 1, 1/2, 1/4 > 0.2
+  EXPECT_EQ(turbulence(tables(), x, y, z, 16.0f, 1.0f), 0.0f);           // no scale exceeds 1
+}
+
+TEST(Fbm, IsASumOfScaledOctaves) {
+  const float x = 1.3f, y = -0.4f, z = 2.5f;
+  const float expected = noise(tables(), x, y, z) + 0.5f * noise(tables(), 2 * x, 2 * y, 2 * z);
+  EXPECT_FLOAT_EQ(fbm(tables(), x, y, z, 2.0f, 2.0f, 0.5f, 0.0f), expected);
+}
+
+}  // namespace
+}  // namespace shadetree::semantics
