@@ -4,7 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "cli/graph_loading.h"
+#include "cli/arguments.h"
+#include "graph/compile_graph.h"
 
 namespace shadetree {
 

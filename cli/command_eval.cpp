@@ -6,7 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/graph_loading.h"
+#include "cli/arguments.h"
+#include "graph/compile_graph.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 

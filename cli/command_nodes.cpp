@@ -47,6 +47,13 @@ void print_plain() {
       first = false;
     }
     std::printf("  %-64s %s\n", signature(op).c_str(), op.doc.c_str());
+    for (const AttributeSpec& attribute : op.attributes) {
+      std::string choices;
+      for (const std::string& choice : attribute.choices) choices += (choices.empty() ? " (" : ", ") + choice;
+      if (!choices.empty()) choices += ")";
+      std::printf("  %-64s   attribute \"%s\"%s%s: %s\n", "", attribute.name.c_str(),
+                  attribute.required ? ", required" : "", choices.c_str(), attribute.doc.c_str());
+    }
   }
 }
 

@@ -5,7 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "cli/graph_loading.h"
+#include "cli/arguments.h"
+#include "graph/compile_graph.h"
 #include "interp/interpreter.h"
 #include "render/image_output.h"
 #include "render/progress.h"

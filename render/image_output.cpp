@@ -22,7 +22,7 @@ Status write_image(const Image& image, const std::string& path) {
   if (extension == ".png") {
     format = OIIO::TypeDesc::UINT8;
   } else if (extension == ".exr") {
-    format = OIIO::TypeDesc::HALF;
+    format = OIIO::TypeDesc::FLOAT;
   } else {
     return invalid_input("output \"" + path + "\": unsupported extension (use .png or .exr)");
   }

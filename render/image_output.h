@@ -10,7 +10,7 @@
 
 namespace shadetree {
 
-// PNG (8-bit, values clamped to [0,1]) or EXR (half float, unclamped),
+// PNG (8-bit, values clamped to [0,1]) or EXR (32-bit float, unclamped),
 // chosen by the extension of `path`.
 Status write_image(const Image& image, const std::string& path);
 

@@ -47,6 +47,10 @@ TEST(Julia, InteriorPointsSurviveEveryIteration) {
   EXPECT_FLOAT_EQ(julia(1.5f, 0.0f, 0.0f, 0.0f, 10.0f), 0.1f);
 }
 
+TEST(Julia, IterationsAreCappedAtTheDocumentedLimit) {
+  EXPECT_EQ(julia(0.0f, 0.0f, 0.0f, 0.0f, 5000.0f), 1.0f);
+}
+
 TEST(Sines, StaysInTheUnitInterval) {
   for (float x = -5.0f; x < 5.0f; x += 0.37f)
     for (float y = -5.0f; y < 5.0f; y += 0.41f) {

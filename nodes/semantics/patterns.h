@@ -62,6 +62,7 @@ F swave(F x, F filter_width, F frequency, F duty, F phase) {
 // limit survived before |z| > 2 (1 for points of the filled set).
 template <class F>
 F julia(F zx, F zy, F cx, F cy, F iterations) {
+  iterations = min(iterations, splat<F>(float(max_julia_iterations)));
   F survived = splat<F>(0.0f);
   auto alive = splat<F>(0.0f) < iterations;
   for (int i = 0; i < max_julia_iterations; ++i) {

@@ -1,0 +1,24 @@
+// Load -> parse -> check -> lower, plus --set style param overrides: the
+// front half of the pipeline, as every command and driver runs it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "graph/diagnostic.h"
+#include "graph/graph.h"
+#include "graph/shade_ir.h"
+
+namespace shadetree {
+
+struct LoadedGraph {
+  std::shared_ptr<const Graph> graph;
+  ShadeIR ir;
+  std::vector<float> params;  // the uniform block, overrides applied
+};
+
+// `assignments` are NAME=VALUE strings (shadetree's --set).
+Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments);
+
+}  // namespace shadetree

@@ -1,0 +1,181 @@
+// The shadetree command as a user meets it: exit statuses, one-line errors,
+// no partial outputs, eval agreeing with render, generated docs up to date.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "graph/graph.h"
+#include "nodes/registry.h"
+#include "render/image_output.h"
+#include "render/texture_driver.h"
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream stream(path);
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("shadetree-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  CommandResult shadetree(const std::string& arguments) const {
+    const fs::path err = directory_ / "stderr.txt";
+    const std::string command = std::string(SHADETREE_BINARY) + " " + arguments + " 2>" + err.string();
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::string out;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+    const int status = ::pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, read_text(err)};
+  }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(directory_ / name) << text;
+    return directory_ / name;
+  }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(directory_))
+      if (entry.path().filename() != "stderr.txt") names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  fs::path directory_;
+};
+
+const std::string gallery = SHADETREE_SOURCE_DIR "/graphs/";
+
+int line_count(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+TEST_F(Cli, CheckAcceptsTheGallery) {
+  const CommandResult run = shadetree("check " + gallery + "marble.json " + gallery + "julia.json");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(line_count(run.out), 2);
+}
+
+TEST_F(Cli, InvalidGraphsExitWithTwoAndOneLine) {
+  const fs::path graph = write("bad.json", R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+      "nodes": [{"id": "uv", "op": "uv"}, {"id": "t2", "op": "turbulence", "in": {"p": "uv"}}],
+      "outputs": {"color": "t2"}})");
+  const CommandResult run = shadetree("check " + graph.string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err, "error: " + graph.string() + ": node \"t2\" input \"p\": expected vec3, got vec2\n");
+}
+
+TEST_F(Cli, MissingFilesAndUsageErrorsExitWithTwo) {
+  CommandResult run = shadetree("check " + (directory_ / "absent.json").string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err, "error: " + (directory_ / "absent.json").string() + ": no such file\n");
+  run = shadetree("render " + gallery + "marble.json");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(line_count(run.err), 1);
+  run = shadetree("frobnicate");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(line_count(run.err), 1);
+}
+
+TEST_F(Cli, BadSizesParamsAndExtensionsExitWithTwoAndWriteNothing) {
+  const std::string out = (directory_ / "out.png").string();
+  CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 100000x100000");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err, "error: --size 100000x100000: each side must be between 1 and 16384 pixels\n");
+  run = shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --set nope=1");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("unknown param \"nope\""), std::string::npos) << run.err;
+  run = shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --set scale=-5");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("param \"scale\": -5 is below the minimum"), std::string::npos) << run.err;
+  run = shadetree("render " + gallery + "marble.json -o " + (directory_ / "out.tiff").string() + " --size 8x8");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Cli, UnwritableOutputsExitWithOneAndLeaveNoPartialFile) {
+  const CommandResult run = shadetree("render " + gallery + "marble.json -o " + (directory_ / "missing" / "out.png").string() +
+                            " --size 8x8");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Cli, RenderWritesTheImageAndASummary) {
+  const std::string out = (directory_ / "marble.png").string();
+  const CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 32x16 --threads 2");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("32x16, 512 samples"), std::string::npos) << run.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"marble.png"});
+  Result<Image> image = read_image(out);
+  ASSERT_TRUE(image.ok());
+  EXPECT_EQ(image->width, 32);
+  EXPECT_EQ(image->height, 16);
+}
+
+// eval at a pixel's sample point prints exactly what render stored there.
+TEST_F(Cli, EvalAgreesWithTheRenderedPixel) {
+  const std::string out = (directory_ / "marble.exr").string();
+  ASSERT_EQ(shadetree("render " + gallery + "marble.json -o " + out + " --size 24x24 --set scale=7").status, 0);
+  Result<Image> image = read_image(out);
+  ASSERT_TRUE(image.ok());
+  TextureView view;
+  view.width = view.height = 24;
+  view.domain_max[0] = view.domain_max[1] = 2.0f;  // marble.json's render domain
+  for (auto [column, row] : {std::pair{5, 7}, std::pair{0, 0}, std::pair{23, 11}}) {
+    const TextureSample sample = texture_sample_at_pixel(view, column, row);
+    std::ostringstream at;
+    at.precision(9);
+    at << sample.P[0] << "," << sample.P[1] << "," << sample.P[2];
+    const CommandResult run = shadetree("eval " + gallery + "marble.json --size 24x24 --set scale=7 --at " + at.str());
+    ASSERT_EQ(run.status, 0) << run.err;
+    const auto result = nlohmann::json::parse(run.out);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(result["outputs"]["color"][c].get<float>(), image->pixels[(row * 24 + column) * 3 + c])
+          << "pixel " << column << "," << row << " channel " << c;
+  }
+}
+
+TEST_F(Cli, NodesMarkdownIsTheCommittedReference) {
+  const CommandResult run = shadetree("nodes --markdown");
+  ASSERT_EQ(run.status, 0);
+  EXPECT_EQ(run.out, read_text(SHADETREE_SOURCE_DIR "/docs/nodes.md"))
+      << "docs/nodes.md is stale: regenerate it with build/shadetree nodes --markdown > docs/nodes.md";
+}
+
+TEST_F(Cli, SchemaEnumeratesEveryOp) {
+  const CommandResult run = shadetree("schema");
+  ASSERT_EQ(run.status, 0);
+  const auto schema = nlohmann::json::parse(run.out);
+  const auto& names = schema["$defs"]["node"]["properties"]["op"]["anyOf"][0]["enum"];
+  EXPECT_EQ(names.size(), all_ops().size());
+  EXPECT_EQ(schema["properties"]["version"]["const"], graph_format_version);
+}
+
+}  // namespace
+}  // namespace shadetree
