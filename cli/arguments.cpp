@@ -1,7 +1,8 @@
 #include "cli/arguments.h"
 
-#include <cmath>
 #include <sstream>
+
+#include "graph/number_list.h"
 
 namespace shadetree {
 
@@ -17,18 +18,22 @@ Result<std::pair<int, int>> parse_size(const std::string& text) {
 }
 
 Result<std::vector<float>> parse_floats(const std::string& text, std::size_t count, const std::string& what) {
-  std::vector<float> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(value)) break;
-    values.push_back(static_cast<float>(value));
-  }
-  if (values.size() != count)
+  std::optional<std::vector<float>> values = parse_number_list(text);
+  if (!values || values->size() != count)
     return invalid_input(what + " expects " + std::to_string(count) + " comma-separated numbers, got \"" + text + "\"");
-  return values;
+  return *values;
+}
+
+Result<TextureView> texture_view(const Graph& graph, const std::string& size, std::optional<float> frame) {
+  TextureView view = TextureView::from_settings(graph.render);
+  if (!size.empty()) {
+    auto parsed = parse_size(size);
+    if (!parsed) return parsed.error();
+    view.width = parsed->first;
+    view.height = parsed->second;
+  }
+  if (frame) view.frame = *frame;
+  return view;
 }
 
 }  // namespace shadetree

@@ -31,14 +31,9 @@ ExitStatus evaluate(const EvalArguments& arguments) {
   if (!at) return report(at.error());
   auto normal = parse_floats(arguments.normal, 3, "--normal");
   if (!normal) return report(normal.error());
-  TextureView view = TextureView::from_settings(loaded->graph->render);
-  if (!arguments.size.empty()) {
-    auto size = parse_size(arguments.size);
-    if (!size) return report(size.error());
-    view.width = size->first;
-    view.height = size->second;
-  }
-  if (arguments.frame) view.frame = *arguments.frame;
+  Result<TextureView> view_or_error = texture_view(*loaded->graph, arguments.size, arguments.frame);
+  if (!view_or_error) return report(view_or_error.error());
+  const TextureView& view = *view_or_error;
   const TextureSample sample = texture_sample_at_point(view, at->data());
 
   float planes[10] = {sample.P[0], sample.P[1], sample.P[2], (*normal)[0], (*normal)[1], (*normal)[2],

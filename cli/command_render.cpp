@@ -31,14 +31,9 @@ ExitStatus render(const RenderArguments& arguments) {
   if (loaded->graph->kind != "texture")
     return report({ExitStatus::invalid_input, arguments.file, {}, {},
                    "render supports texture graphs for now; this is a " + loaded->graph->kind + " graph"});
-  TextureView view = TextureView::from_settings(loaded->graph->render);
-  if (!arguments.size.empty()) {
-    auto size = parse_size(arguments.size);
-    if (!size) return report(size.error());
-    view.width = size->first;
-    view.height = size->second;
-  }
-  if (arguments.frame) view.frame = *arguments.frame;
+  Result<TextureView> view_or_error = texture_view(*loaded->graph, arguments.size, arguments.frame);
+  if (!view_or_error) return report(view_or_error.error());
+  const TextureView& view = *view_or_error;
 
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Kernel> kernel = make_interpreted_kernel(loaded->ir);

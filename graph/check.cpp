@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "graph/number_list.h"
 #include "nodes/noise_tables.h"
 #include "nodes/semantics/splines.h"
 
@@ -551,16 +552,9 @@ Result<std::vector<float>> parse_param_value(const ParamDecl& param, const std::
     if (text == "false" || text == "0") return std::vector<float>{0.0f};
     return bad("expected true or false");
   }
-  std::vector<float> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(value) || std::fabs(value) > 3.4e38)
-      return bad("expected " + std::to_string(component_count(param.type)) + " comma-separated number(s)");
-    values.push_back(static_cast<float>(value));
-  }
+  std::optional<std::vector<float>> parsed = parse_number_list(text);
+  if (!parsed) return bad("expected " + std::to_string(component_count(param.type)) + " comma-separated number(s)");
+  std::vector<float> values = std::move(*parsed);
   const std::size_t components = static_cast<std::size_t>(component_count(param.type));
   if (values.size() == 1 && components > 1) values.assign(components, values[0]);
   if (values.size() != components)
