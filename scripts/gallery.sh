@@ -14,10 +14,13 @@ index=out/gallery/index.html
 } > "$index"
 for graph in graphs/*.json; do
   name=$(basename "$graph" .json)
-  start=$(date +%s%N)
-  build/shadetree render "$graph" -o "out/gallery/$name.png"
-  end=$(date +%s%N)
-  milliseconds=$(( (end - start) / 1000000 ))
-  echo "<figure><img src=\"$name.png\" alt=\"$name\"><figcaption>$name &mdash; ${milliseconds} ms</figcaption></figure>" >> "$index"
+  # The render's own summary line says how long the render took.
+  if ! summary=$(build/shadetree render "$graph" -o "out/gallery/$name.png" 2>&1); then
+    echo "$summary" >&2
+    exit 1
+  fi
+  echo "$summary"
+  seconds=$(echo "$summary" | sed -nE 's/.* in ([0-9.]+) s .*/\1/p')
+  echo "<figure><img src=\"$name.png\" alt=\"$name\"><figcaption>$name &mdash; rendered in ${seconds} s</figcaption></figure>" >> "$index"
 done
 echo "gallery: $(ls out/gallery/*.png | wc -l) images in out/gallery/index.html"
