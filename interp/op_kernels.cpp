@@ -63,9 +63,17 @@ void comparison(const ExecContext& context) {
   for_lanes(context.lanes, [&](int i) { out[i] = stored(Compare(a[i], b[i])); });
 }
 
-Vec3<float> load3(const ExecContext& context, int arg, int i) {
-  return {context.in(arg, 0)[i], context.in(arg, 1)[i], context.in(arg, 2)[i]};
+// The component planes of a vec3 argument, fetched once per instruction.
+struct Planes3 {
+  const float *x, *y, *z;
+  Vec3<float> at(int i) const { return {x[i], y[i], z[i]}; }
+};
+
+Planes3 planes3(const ExecContext& context, int arg) {
+  return {context.in(arg, 0), context.in(arg, 1), context.in(arg, 2)};
 }
+
+Vec3<float> load3(const ExecContext& context, int arg, int i) { return planes3(context, arg).at(i); }
 
 void store3(const ExecContext& context, int i, const Vec3<float>& value) {
   context.out(0)[i] = value.x;
@@ -99,39 +107,42 @@ OpKernel kernel_of(OpId op) {
 
     case OpId::noise:
       return [](const ExecContext& x) {
+        const Planes3 p = planes3(x, 0);
         float* out = x.out();
-        for_lanes(x.lanes, [&](int i) { out[i] = sem::noise(*x.tables, x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i]); });
+        for_lanes(x.lanes, [&](int i) { out[i] = sem::noise(*x.tables, p.x[i], p.y[i], p.z[i]); });
       };
     case OpId::dnoise:
       return [](const ExecContext& x) {
-        for_lanes(x.lanes, [&](int i) {
-          store3(x, i, sem::dnoise(*x.tables, x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i]));
-        });
+        const Planes3 p = planes3(x, 0);
+        for_lanes(x.lanes, [&](int i) { store3(x, i, sem::dnoise(*x.tables, p.x[i], p.y[i], p.z[i])); });
       };
     case OpId::vnoise:
       return [](const ExecContext& x) {
-        for_lanes(x.lanes, [&](int i) {
-          store3(x, i, sem::vnoise(*x.tables, x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i]));
-        });
+        const Planes3 p = planes3(x, 0);
+        for_lanes(x.lanes, [&](int i) { store3(x, i, sem::vnoise(*x.tables, p.x[i], p.y[i], p.z[i])); });
       };
     case OpId::noise_improved:
       return [](const ExecContext& x) {
+        const Planes3 p = planes3(x, 0);
         float* out = x.out();
-        for_lanes(x.lanes, [&](int i) { out[i] = sem::noise_improved(x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i]); });
+        for_lanes(x.lanes, [&](int i) { out[i] = sem::noise_improved(p.x[i], p.y[i], p.z[i]); });
       };
     case OpId::turbulence:
       return [](const ExecContext& x) {
+        const Planes3 p = planes3(x, 0);
+        const float *octaves = x.in(1), *filter_width = x.in(2);
         float* out = x.out();
         for_lanes(x.lanes, [&](int i) {
-          out[i] = sem::turbulence(*x.tables, x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i], x.in(1)[i], x.in(2)[i]);
+          out[i] = sem::turbulence(*x.tables, p.x[i], p.y[i], p.z[i], octaves[i], filter_width[i]);
         });
       };
     case OpId::fbm:
       return [](const ExecContext& x) {
+        const Planes3 p = planes3(x, 0);
+        const float *octaves = x.in(1), *lacunarity = x.in(2), *gain = x.in(3), *filter_width = x.in(4);
         float* out = x.out();
         for_lanes(x.lanes, [&](int i) {
-          out[i] = sem::fbm(*x.tables, x.in(0, 0)[i], x.in(0, 1)[i], x.in(0, 2)[i], x.in(1)[i], x.in(2)[i],
-                            x.in(3)[i], x.in(4)[i]);
+          out[i] = sem::fbm(*x.tables, p.x[i], p.y[i], p.z[i], octaves[i], lacunarity[i], gain[i], filter_width[i]);
         });
       };
     case OpId::sines:
