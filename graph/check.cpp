@@ -141,7 +141,7 @@ class Checker {
     }
     CheckedBody result;
     for (const OutputDecl& output : outputs) {
-      CheckedSource source = resolve_source(body, output.source, {}, "output \"" + output.name + "\"");
+      CheckedSource source = resolve_source(body, output.source, {}, "output " + output.name);
       result.outputs.push_back({output.name, source});
     }
     result.nodes = std::move(body.checked);
@@ -151,7 +151,8 @@ class Checker {
   int referenced_node(const Body& body, const Node& node, const std::string& input, const InputValue& value) const {
     auto found = body.index.find(value.node);
     if (found == body.index.end())
-      fail(node.id, input, "no node \"" + value.node + "\"" + (body.function ? " in function " + body.function->name : ""));
+      fail(node.id, input, "no node \"" + value.node + "\"" +
+                               (body.function ? " in function \"" + body.function->name + "\"" : ""));
     return found->second;
   }
 
@@ -268,6 +269,9 @@ class Checker {
     checked.function = callee.function;
 
     if (callee.op) check_attributes(node, *callee.op, checked);
+    if (!callee.op && !node.attributes.empty())
+      fail(node.id, {}, "unknown field \"" + node.attributes.begin()->first + "\" (inputs of function " + node.op +
+                            " go in \"in\")");
     std::vector<std::string> port_names;
     for (const PortSpec& port : callee.inputs) port_names.push_back(port.name);
     std::vector<std::optional<CheckedSource>> given(callee.inputs.size());
@@ -504,6 +508,9 @@ class Checker {
   }
 
   void check_required_outputs(const CheckedBody& body) const {
+    for (const CheckedOutput& output : body.outputs)
+      if (output.name == "alpha" && !accepts(output.source, Type::float_))
+        fail({}, {}, "output \"alpha\": expected float, got " + type_text(output.source.type));
     for (const RequiredOutput& required : required_outputs(graph_.kind)) {
       auto found = std::find_if(body.outputs.begin(), body.outputs.end(),
                                 [&](const CheckedOutput& output) { return output.name == required.name; });

@@ -15,7 +15,9 @@
 namespace shadetree {
 namespace {
 
-using json = nlohmann::json;
+// ordered_json keeps objects in file order: a function's first output is
+// the first one written.
+using json = nlohmann::ordered_json;
 
 // Parsing stops at the first error: a small exception type carries it out
 // of the recursive descent and parse_graph turns it back into a value.

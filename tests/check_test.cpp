@@ -158,6 +158,25 @@ TEST(Check, ChecksFunctionsAndTheirCalls) {
             "error: g.json: function \"f\" calls itself (directly or through other functions)");
 }
 
+TEST(Check, FunctionOutputsKeepFileOrder) {
+  const std::string functions = R"("functions": {"polar": {"inputs": {"x": "float"},
+      "nodes": [{"id": "r", "op": "abs", "in": {"x": "$x"}}, {"id": "a", "op": "vec2", "in": {"x": "$x"}}],
+      "outputs": {"radius": "r", "angle": "a"}}},)";
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "polar", "in": {"x": 2}},
+                                   {"id": "c", "op": "color", "in": {"r": "p"}})",
+                                color_out, functions)),
+            "ok");  // "p" is radius (float), not angle (vec2)
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "polar", "in": {"x": 2}, "seed": 3},
+                                   {"id": "c", "op": "color", "in": {"r": "p"}})",
+                                color_out, functions)),
+            "error: g.json: node \"p\": unknown field \"seed\" (inputs of function polar go in \"in\")");
+}
+
+TEST(Check, AlphaMustBeAFloat) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p", "alpha": "p")")),
+            "error: g.json: output \"alpha\": expected float, got vec3");
+}
+
 TEST(Check, DensityIsOnlyForVolumes) {
   EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "density"})", color_out)),
             "error: g.json: node \"c\": op \"density\" is only available in volume graphs, this is a texture graph");
