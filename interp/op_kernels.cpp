@@ -190,29 +190,22 @@ OpKernel kernel_of(OpId op) {
     case OpId::remap: return componentwise<sem::remap<float>>;
 
     case OpId::dot:
-      return [](const ExecContext& x) {
-        const int components = component_count(x.ir->code[x.instr->args[0]].type);
-        float* out = x.out();
-        fill_plane(0.0f, out, x.lanes);
-        for (int c = 0; c < components; ++c) {
-          const float *a = x.in(0, c), *b = x.in(1, c);
-          for_lanes(x.lanes, [&](int i) { out[i] = out[i] + a[i] * b[i]; });
-        }
-      };
     case OpId::length:
     case OpId::normalize:
       return [](const ExecContext& x) {
         const int components = component_count(x.ir->code[x.instr->args[0]].type);
-        const bool normalize = x.instr->op == OpId::normalize;
+        const OpId op = x.instr->op;
         for_lanes(x.lanes, [&](int i) {
-          float length_squared = 0.0f;
-          for (int c = 0; c < components; ++c) length_squared = length_squared + x.in(0, c)[i] * x.in(0, c)[i];
-          if (!normalize) {
-            x.out()[i] = lanes::sqrt(length_squared);
-            return;
+          float a[3], b[3], normalized[3];
+          for (int c = 0; c < components; ++c) {
+            a[c] = x.in(0, c)[i];
+            b[c] = op == OpId::dot ? x.in(1, c)[i] : 0.0f;
           }
-          const float inverse = sem::inverse_length_or_zero(length_squared);
-          for (int c = 0; c < components; ++c) x.out(c)[i] = x.in(0, c)[i] * inverse;
+          if (op == OpId::dot) x.out()[i] = sem::dot_n(a, b, components);
+          if (op == OpId::length) x.out()[i] = sem::length_n(a, components);
+          if (op != OpId::normalize) return;
+          sem::normalize_n(a, components, normalized);
+          for (int c = 0; c < components; ++c) x.out(c)[i] = normalized[c];
         });
       };
     case OpId::cross:
@@ -293,14 +286,9 @@ OpKernel kernel_of(OpId op) {
       };
     case OpId::table1d:
       return [](const ExecContext& x) {
-        const float* domain = x.data();
-        const int count = x.instr->immediate[0];
         const float* t = x.in(0);
         float* out = x.out();
-        for_lanes(x.lanes, [&](int i) {
-          const float unit = (t[i] - domain[0]) / (domain[1] - domain[0]);
-          out[i] = sem::spline(domain + 2, count, 1, 0, sem::SplineBasis::linear, unit);
-        });
+        for_lanes(x.lanes, [&](int i) { out[i] = sem::table1d(x.data(), x.instr->immediate[0], t[i]); });
       };
     case OpId::table2d:
       return [](const ExecContext& x) {

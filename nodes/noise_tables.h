@@ -25,8 +25,4 @@ NoiseTables make_noise_tables(std::uint32_t seed);
 // Cached make_noise_tables; thread-safe; the reference stays valid.
 const NoiseTables& noise_tables(std::uint32_t seed);
 
-// Ken Perlin's reference permutation for "Improving Noise" (2002), repeated
-// twice so that p[i + 1] needs no wrap.
-extern const std::array<std::int32_t, 512> improved_noise_permutation;
-
 }  // namespace shadetree

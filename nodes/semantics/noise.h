@@ -1,6 +1,7 @@
 // Noise generators, written once over a lane type F (see nodes/lane_scalar.h).
 #pragma once
 
+#include "nodes/improved_noise_permutation.h"
 #include "nodes/lane_scalar.h"
 #include "nodes/limits.h"
 #include "nodes/noise_tables.h"

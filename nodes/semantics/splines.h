@@ -45,6 +45,13 @@ F spline(const float* knots, int count, int components, int component, SplineBas
          0.5f;
 }
 
+// Gilet & Dischler 2010 section 4.1: a 1D shape transfer function, control
+// values equally spaced over data[0] .. data[1], linearly interpolated.
+template <class F>
+F table1d(const float* data, int count, F x) {
+  return spline(data + 2, count, 1, 0, SplineBasis::linear, (x - data[0]) / (data[1] - data[0]));
+}
+
 // Integral from 0 to u (in entries) of the piecewise-constant table, from
 // prefix sums (prefix[k] = sum of the first k entries); beyond the ends the
 // end entries extend.

@@ -20,4 +20,24 @@ F inverse_length_or_zero(F length_squared) {
   return select(length > 0.0f, 1.0f / select(length > 0.0f, length, splat<F>(1.0f)), splat<F>(0.0f));
 }
 
+// Inner product of n-component vectors given as arrays of lanes, summed
+// in component order from zero.
+template <class F>
+F dot_n(const F* a, const F* b, int n) {
+  F sum = splat<F>(0.0f);
+  for (int c = 0; c < n; ++c) sum = sum + a[c] * b[c];
+  return sum;
+}
+
+template <class F>
+F length_n(const F* v, int n) {
+  return sqrt(dot_n(v, v, n));
+}
+
+template <class F>
+void normalize_n(const F* v, int n, F* out) {
+  F inverse = inverse_length_or_zero(dot_n(v, v, n));
+  for (int c = 0; c < n; ++c) out[c] = v[c] * inverse;
+}
+
 }  // namespace shadetree::semantics

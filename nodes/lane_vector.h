@@ -1,0 +1,54 @@
+// Lane primitives for W samples at a time, in clang vector types:
+// F = floatv<W>, I = intv<W>, M = intv<W> (all ones / zero per lane).
+// Only compiled by clang (codegen/ops_bitcode.cpp), never by the host
+// compiler. Each primitive does, per lane, exactly what its scalar twin in
+// lane_scalar.h does, so the semantics compute the same values either way.
+#pragma once
+
+#include <cstdint>
+
+namespace shadetree::lanes {
+
+template <int W>
+using floatv = float __attribute__((ext_vector_type(W)));
+template <int W>
+using intv = std::int32_t __attribute__((ext_vector_type(W)));
+
+#define SHADETREE_VECTOR_LANES(W)                                                                             \
+  inline floatv<W> select(intv<W> mask, floatv<W> a, floatv<W> b) { return mask ? a : b; }                  \
+  inline intv<W> select(intv<W> mask, intv<W> a, intv<W> b) { return mask ? a : b; }                        \
+  inline bool any(intv<W> mask) { return __builtin_reduce_or(mask) != 0; }                                  \
+  inline intv<W> both(intv<W> a, intv<W> b) { return a & b; }                                               \
+  inline intv<W> either(intv<W> a, intv<W> b) { return a | b; }                                             \
+  inline intv<W> negate(intv<W> a) { return ~a; }                                                           \
+  inline floatv<W> floor(floatv<W> x) { return __builtin_elementwise_floor(x); }                            \
+  inline floatv<W> abs(floatv<W> x) { return __builtin_elementwise_abs(x); }                                \
+  inline floatv<W> sqrt(floatv<W> x) { return __builtin_elementwise_sqrt(x); }                              \
+  inline floatv<W> pow(floatv<W> x, floatv<W> y) { return __builtin_elementwise_pow(x, y); }                \
+  inline floatv<W> exp(floatv<W> x) { return __builtin_elementwise_exp(x); }                                \
+  inline floatv<W> log(floatv<W> x) { return __builtin_elementwise_log(x); }                                \
+  inline floatv<W> sin(floatv<W> x) { return __builtin_elementwise_sin(x); }                                \
+  inline floatv<W> cos(floatv<W> x) { return __builtin_elementwise_cos(x); }                                \
+  inline floatv<W> min(floatv<W> a, floatv<W> b) { return a < b ? a : b; }                                  \
+  inline floatv<W> max(floatv<W> a, floatv<W> b) { return a > b ? a : b; }                                  \
+  inline intv<W> min(intv<W> a, intv<W> b) { return a < b ? a : b; }                                        \
+  inline intv<W> max(intv<W> a, intv<W> b) { return a > b ? a : b; }                                        \
+  inline intv<W> to_int(floatv<W> x) { return __builtin_convertvector(x, intv<W>); }                        \
+  inline floatv<W> to_float(intv<W> i) { return __builtin_convertvector(i, floatv<W>); }                    \
+  inline floatv<W> gather(const float* table, intv<W> index) {                                              \
+    floatv<W> result;                                                                                        \
+    for (int lane = 0; lane < W; ++lane) result[lane] = table[index[lane]];                                 \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline intv<W> gather(const std::int32_t* table, intv<W> index) {                                         \
+    intv<W> result;                                                                                          \
+    for (int lane = 0; lane < W; ++lane) result[lane] = table[index[lane]];                                 \
+    return result;                                                                                           \
+  }
+
+SHADETREE_VECTOR_LANES(4)
+SHADETREE_VECTOR_LANES(8)
+SHADETREE_VECTOR_LANES(16)
+#undef SHADETREE_VECTOR_LANES
+
+}  // namespace shadetree::lanes
