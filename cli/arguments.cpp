@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "graph/number_list.h"
+#include "interp/interpreter.h"
+#include "jit/jit_kernel.h"
 
 namespace shadetree {
 
@@ -34,6 +36,11 @@ Result<TextureView> texture_view(const Graph& graph, const std::string& size, st
   }
   if (frame) view.frame = *frame;
   return view;
+}
+
+Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const ShadeIR& ir, int width) {
+  if (backend == "interp") return make_interpreted_kernel(ir);
+  return make_jit_kernel(ir, width);
 }
 
 }  // namespace shadetree

@@ -5,10 +5,12 @@
 #include <utility>
 #include <vector>
 
+#include <memory>
 #include <optional>
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "graph/kernel.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
@@ -22,5 +24,9 @@ Result<std::vector<float>> parse_floats(const std::string& text, std::size_t cou
 // The texture view of a graph's render settings with --size and --frame
 // applied (empty size / no frame: keep the graph's).
 Result<TextureView> texture_view(const Graph& graph, const std::string& size, std::optional<float> frame);
+
+// The kernel of `ir` from the named backend ("jit" or "interp"); width is
+// the JIT's vector width (0: the host's).
+Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const ShadeIR& ir, int width);
 
 }  // namespace shadetree

@@ -7,7 +7,6 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "graph/compile_graph.h"
-#include "interp/interpreter.h"
 #include "render/image_output.h"
 #include "render/progress.h"
 #include "render/texture_driver.h"
@@ -22,7 +21,8 @@ struct RenderArguments {
   std::vector<std::string> assignments;
   std::optional<float> frame;
   int threads = 0;
-  std::string backend = "interp";
+  std::string backend = "jit";
+  int width = 0;
 };
 
 ExitStatus render(const RenderArguments& arguments) {
@@ -36,13 +36,14 @@ ExitStatus render(const RenderArguments& arguments) {
   const TextureView& view = *view_or_error;
 
   const auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<Kernel> kernel = make_interpreted_kernel(loaded->ir);
+  Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, loaded->ir, arguments.width);
+  if (!kernel) return report(kernel.error());
   Result<Image> image = [&] {
     ProgressReporter progress("rendering " + arguments.file);
     TextureRenderOptions options;
     options.threads = arguments.threads;
     options.progress = [&progress](double fraction) { progress.update(fraction); };
-    return render_texture(*kernel, loaded->params, view, options);
+    return render_texture(**kernel, loaded->params, view, options);
   }();
   if (!image) return report(image.error());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -66,7 +67,10 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
   command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  command->add_option("--backend", arguments->backend, "backend: interp")->check(CLI::IsMember({"interp"}));
+  command->add_option("--backend", arguments->backend, "backend: jit (default) or interp")
+      ->check(CLI::IsMember({"jit", "interp"}));
+  command->add_option("--width", arguments->width, "JIT vector width: 4, 8 or 16 (default: the host's widest)")
+      ->check(CLI::IsMember({4, 8, 16}));
   command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
 }
 

@@ -1,0 +1,392 @@
+// ShadeIR -> LLVM IR (see emit_kernel.h).
+//
+// Every ShadeIR value lives in an alloca of [components x <W x float>];
+// instructions load their arguments, call the op library (or, for pure data
+// movement, shuffle values themselves) and store their result. mem2reg and
+// SROA turn this into SSA after the op library is inlined, and conditional
+// regions need no hand-built phis. Uniform instructions are emitted once,
+// before the sample loop; varying ones inside it. A region becomes a branch
+// that skips its blocks when no active lane takes it (ISPC-style masked
+// control flow); inside, all W lanes compute and the `if` selects per lane.
+#include "codegen/emit_kernel.h"
+
+#include <map>
+
+#include <llvm/IR/Constants.h>
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include "codegen/op_library.h"
+#include "nodes/noise_tables.h"
+#include "nodes/registry.h"
+
+namespace shadetree {
+namespace {
+
+// Input planes in the kernel's input_planes array.
+int input_plane(OpId op) {
+  switch (op) {
+    case OpId::P: return 0;
+    case OpId::N: return 3;
+    case OpId::uv: return 6;
+    case OpId::filter_width: return 8;
+    case OpId::density: return 9;
+    default: return -1;
+  }
+}
+
+bool uses_noise_tables(OpId op) {
+  return op == OpId::noise || op == OpId::dnoise || op == OpId::vnoise || op == OpId::turbulence ||
+         op == OpId::fbm;
+}
+
+class KernelEmitter {
+ public:
+  KernelEmitter(const ShadeIR& ir, int width, llvm::Module& module)
+      : ir_(ir), width_(width), module_(module), context_(module.getContext()), builder_(context_) {
+    float_ = builder_.getFloatTy();
+    vector_ = llvm::FixedVectorType::get(float_, static_cast<unsigned>(width));
+    ptr_ = builder_.getPtrTy();
+  }
+
+  Result<llvm::Function*> emit(const std::string& name) {
+    auto* type = llvm::FunctionType::get(builder_.getVoidTy(),
+                                         {ptr_, ptr_, float_, float_, ptr_, builder_.getInt64Ty()}, false);
+    function_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    auto args = function_->arg_begin();
+    params_ = &*args++;
+    inputs_ = &*args++;
+    time_ = &*args++;
+    frame_ = &*args++;
+    outputs_ = &*args++;
+    count_ = &*args++;
+
+    entry_ = llvm::BasicBlock::Create(context_, "entry", function_);
+    builder_.SetInsertPoint(entry_);
+    allocate_registers();
+    if (!ir_.data.empty()) {
+      auto* data_type = llvm::ArrayType::get(float_, ir_.data.size());
+      data_ = new llvm::GlobalVariable(module_, data_type, true, llvm::GlobalValue::InternalLinkage,
+                                       llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(ir_.data)),
+                                       "shade_data");
+    }
+    // Uniform values once, before the loop.
+    for (std::size_t i = 0; i < ir_.code.size(); ++i)
+      if (ir_.code[i].uniform) {
+        Status status = emit_instruction(static_cast<int>(i), nullptr);
+        if (!status) return status.error();
+      }
+
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(context_, "loop", function_);
+    llvm::BasicBlock* exit = llvm::BasicBlock::Create(context_, "exit", function_);
+    builder_.CreateCondBr(builder_.CreateICmpSGT(count_, builder_.getInt64(0)), loop, exit);
+    builder_.SetInsertPoint(loop);
+    llvm::PHINode* index = builder_.CreatePHI(builder_.getInt64Ty(), 2, "sample");
+    index->addIncoming(builder_.getInt64(0), entry_);
+    index_ = index;
+
+    llvm::Value* all_lanes = llvm::ConstantInt::getTrue(llvm::FixedVectorType::get(builder_.getInt1Ty(), width_));
+    std::vector<std::pair<llvm::Value*, llvm::BasicBlock*>> regions;  // (outer mask, merge block)
+    llvm::Value* mask = all_lanes;
+    for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+      const IrInstr& instr = ir_.code[i];
+      if (instr.uniform) continue;
+      if (instr.kind == IrOpKind::begin_region) {
+        llvm::Value* condition = builder_.CreateFCmpUNE(load(instr.args[0], 0), llvm::ConstantFP::get(vector_, 0.0));
+        if (instr.immediate[0] != 0) condition = builder_.CreateNot(condition);
+        llvm::Value* region_mask = builder_.CreateAnd(mask, condition);
+        llvm::Value* any = builder_.CreateICmpNE(
+            builder_.CreateBitCast(region_mask, builder_.getIntNTy(static_cast<unsigned>(width_))),
+            builder_.getIntN(static_cast<unsigned>(width_), 0));
+        auto* body = llvm::BasicBlock::Create(context_, "region", function_);
+        auto* merge = llvm::BasicBlock::Create(context_, "after_region", function_);
+        builder_.CreateCondBr(any, body, merge);
+        builder_.SetInsertPoint(body);
+        regions.push_back({mask, merge});
+        mask = region_mask;
+        continue;
+      }
+      if (instr.kind == IrOpKind::end_region) {
+        builder_.CreateBr(regions.back().second);
+        builder_.SetInsertPoint(regions.back().second);
+        mask = regions.back().first;
+        regions.pop_back();
+        continue;
+      }
+      Status status = emit_instruction(static_cast<int>(i), index_);
+      if (!status) return status.error();
+    }
+    store_outputs();
+    llvm::Value* next = builder_.CreateAdd(index_, builder_.getInt64(width_), "next_sample");
+    index->addIncoming(next, builder_.GetInsertBlock());
+    builder_.CreateCondBr(builder_.CreateICmpSLT(next, count_), loop, exit);
+    builder_.SetInsertPoint(exit);
+    builder_.CreateRetVoid();
+
+    std::string problems;
+    llvm::raw_string_ostream stream(problems);
+    if (llvm::verifyFunction(*function_, &stream)) return failure("codegen produced invalid IR: " + problems);
+    return function_;
+  }
+
+ private:
+  void allocate_registers() {
+    for (const IrInstr& instr : ir_.code) {
+      const int components = component_count(instr.type);
+      registers_.push_back(
+          builder_.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(components))));
+    }
+  }
+
+  // Pointer to component c of value v, reading scalars as splatted vectors.
+  llvm::Value* component_pointer(int value, int component) {
+    const int components = component_count(ir_.code[value].type);
+    const int c = std::min(component, components - 1);
+    return builder_.CreateConstInBoundsGEP2_32(registers_[value]->getAllocatedType(), registers_[value], 0,
+                                               static_cast<unsigned>(c));
+  }
+
+  llvm::Value* load(int value, int component) { return builder_.CreateLoad(vector_, component_pointer(value, component)); }
+
+  void store(int value, int component, llvm::Value* vector) {
+    builder_.CreateStore(vector, component_pointer(value, component));
+  }
+
+  // A pointer to `components` consecutive vectors holding argument `value`;
+  // a scalar passed where a vector is expected is splatted into a copy.
+  llvm::Value* array_pointer(int value, int components) {
+    if (component_count(ir_.code[value].type) >= components) return component_pointer(value, 0);
+    llvm::IRBuilder<> entry_builder(entry_, entry_->begin());
+    auto* copy = entry_builder.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(components)));
+    for (int c = 0; c < components; ++c)
+      builder_.CreateStore(load(value, c), builder_.CreateConstInBoundsGEP2_32(copy->getAllocatedType(), copy, 0,
+                                                                                static_cast<unsigned>(c)));
+    return copy;
+  }
+
+  llvm::Value* splat(llvm::Value* scalar) { return builder_.CreateVectorSplat(static_cast<unsigned>(width_), scalar); }
+
+  llvm::Function* library_function(const std::string& name) {
+    return module_.getFunction("st_" + name + "_w" + std::to_string(width_));
+  }
+
+  llvm::Value* data_pointer(const IrInstr& instr, int offset = 0) {
+    if (!data_) return llvm::ConstantPointerNull::get(ptr_);
+    return builder_.CreateConstInBoundsGEP2_32(data_->getValueType(), data_, 0,
+                                               static_cast<unsigned>(instr.data_offset + offset));
+  }
+
+  llvm::Value* noise_tables_pointer(std::uint32_t seed) {
+    auto found = tables_.find(seed);
+    if (found != tables_.end()) return found->second;
+    const NoiseTables& tables = noise_tables(seed);
+    auto floats = [&](const std::array<float, noise_table_size>& values) {
+      return llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(values.data(), values.size()));
+    };
+    llvm::Constant* fields[] = {
+        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<std::int32_t>(tables.permutation.data(),
+                                                                             tables.permutation.size())),
+        floats(tables.gradient_x), floats(tables.gradient_y), floats(tables.gradient_z)};
+    llvm::Constant* initializer = llvm::ConstantStruct::getAnon(context_, fields);
+    auto* global = new llvm::GlobalVariable(module_, initializer->getType(), true, llvm::GlobalValue::InternalLinkage,
+                                            initializer, "noise_tables_" + std::to_string(seed));
+    global->setAlignment(llvm::Align(64));
+    tables_[seed] = global;
+    return global;
+  }
+
+  Status call(const std::string& name, std::vector<llvm::Value*> arguments) {
+    llvm::Function* callee = library_function(name);
+    if (!callee) return failure("codegen: the op library has no st_" + name + " for width " + std::to_string(width_));
+    builder_.CreateCall(callee, arguments);
+    return success();
+  }
+
+  // out[c] = f(args[c]...) for every component of the result.
+  Status componentwise(int self, const std::string& name) {
+    const IrInstr& instr = ir_.code[self];
+    for (int c = 0; c < component_count(instr.type); ++c) {
+      std::vector<llvm::Value*> arguments{component_pointer(self, c)};
+      for (int a = 0; a < instr.arg_count; ++a) arguments.push_back(component_pointer(instr.args[a], c));
+      Status status = call(name, arguments);
+      if (!status) return status;
+    }
+    return success();
+  }
+
+  Status emit_instruction(int self, llvm::Value* index) {
+    const IrInstr& instr = ir_.code[self];
+    switch (instr.kind) {
+      case IrOpKind::constant:
+        for (int c = 0; c < component_count(instr.type); ++c)
+          store(self, c, llvm::ConstantFP::get(vector_, ir_.data[instr.data_offset + std::min(c, instr.data_count - 1)]));
+        return success();
+      case IrOpKind::param:
+        for (int c = 0; c < component_count(instr.type); ++c)
+          store(self, c, splat(builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(
+                                                               float_, params_, static_cast<unsigned>(instr.immediate[0] + c)))));
+        return success();
+      case IrOpKind::extract:
+        store(self, 0, load(instr.args[0], instr.immediate[0]));
+        return success();
+      case IrOpKind::begin_region:
+      case IrOpKind::end_region:
+        return failure("codegen: a region marker outside the sample loop");
+      case IrOpKind::op:
+        return emit_op(self, index);
+    }
+    return success();
+  }
+
+  Status emit_op(int self, llvm::Value* index) {
+    const IrInstr& instr = ir_.code[self];
+    const OpId op = instr.op;
+    const std::string& name = op_def(op).name;
+    auto out = [&] { return component_pointer(self, 0); };
+    auto arg = [&](int a, int components = 1) { return array_pointer(instr.args[a], components); };
+    auto int_constant = [&](int value) { return builder_.getInt32(value); };
+    switch (op) {
+      case OpId::P:
+      case OpId::N:
+      case OpId::uv:
+      case OpId::filter_width:
+      case OpId::density: {
+        const int first = input_plane(op);
+        for (int c = 0; c < component_count(instr.type); ++c) {
+          llvm::Value* plane = builder_.CreateLoad(
+              ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, inputs_, static_cast<unsigned>(first + c)));
+          llvm::Value* address = builder_.CreateInBoundsGEP(float_, plane, index);
+          store(self, c, builder_.CreateAlignedLoad(vector_, address, llvm::Align(4)));
+        }
+        return success();
+      }
+      case OpId::time: store(self, 0, splat(time_)); return success();
+      case OpId::frame: store(self, 0, splat(frame_)); return success();
+
+      case OpId::noise:
+      case OpId::dnoise:
+      case OpId::vnoise:
+        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3)});
+      case OpId::turbulence:
+        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3),
+                           arg(1), arg(2)});
+      case OpId::fbm:
+        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3),
+                           arg(1), arg(2), arg(3), arg(4)});
+      case OpId::noise_improved:
+      case OpId::checker: return call(name, {out(), arg(0, 3)});
+      case OpId::sines: return call(name, {out(), arg(0, 3), arg(1), arg(2)});
+      case OpId::julia: return call(name, {out(), arg(0, 2), arg(1, 2), arg(2)});
+
+      case OpId::dot:
+      case OpId::length:
+      case OpId::normalize: {
+        const int components = component_count(ir_.code[instr.args[0]].type);
+        if (op == OpId::dot) return call(name, {out(), arg(0, components), arg(1, components), int_constant(components)});
+        return call(name, {out(), arg(0, components), int_constant(components)});
+      }
+      case OpId::cross: return call(name, {out(), arg(0, 3), arg(1, 3)});
+      case OpId::vec2:
+      case OpId::vec3:
+      case OpId::color:
+        for (int c = 0; c < component_count(instr.type); ++c) store(self, c, load(instr.args[c], 0));
+        return success();
+      case OpId::to_color:
+      case OpId::to_vec3:
+        for (int c = 0; c < 3; ++c) store(self, c, load(instr.args[0], c));
+        return success();
+      case OpId::split: return failure("codegen: split should have been lowered to extracts");
+
+      case OpId::select:
+      case OpId::if_:
+        for (int c = 0; c < component_count(instr.type); ++c) {
+          Status status = call("select", {component_pointer(self, c), component_pointer(instr.args[0], 0),
+                                          component_pointer(instr.args[1], c), component_pointer(instr.args[2], c)});
+          if (!status) return status;
+        }
+        return success();
+
+      case OpId::spline: {
+        const int components = instr.immediate[0];
+        for (int c = 0; c < components; ++c) {
+          Status status = call(name, {component_pointer(self, c), data_pointer(instr), int_constant(instr.data_count / components),
+                                      int_constant(components), int_constant(c), int_constant(instr.immediate[1]), arg(0)});
+          if (!status) return status;
+        }
+        return success();
+      }
+      case OpId::color_table: {
+        const int components = instr.immediate[0];
+        for (int c = 0; c < components; ++c) {
+          Status status = call(name, {component_pointer(self, c), data_pointer(instr), int_constant(instr.immediate[1]),
+                                      int_constant(components), int_constant(c), arg(0), arg(1)});
+          if (!status) return status;
+        }
+        return success();
+      }
+      case OpId::table1d: return call(name, {out(), data_pointer(instr), int_constant(instr.immediate[0]), arg(0)});
+      case OpId::table2d:
+        return call(name, {out(), data_pointer(instr), int_constant(instr.immediate[0]), int_constant(instr.immediate[1]),
+                           arg(0), arg(1)});
+      case OpId::sphere: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2), arg(3)});
+      case OpId::box: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2, 3), arg(3)});
+      case OpId::torus: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2), arg(3), arg(4)});
+
+      default:
+        return componentwise(self, name);
+    }
+  }
+
+  void store_outputs() {
+    unsigned plane = 0;
+    for (const IrOutput& output : ir_.outputs) {
+      for (int c = 0; c < component_count(output.type); ++c, ++plane) {
+        llvm::Value* base = builder_.CreateLoad(ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, outputs_, plane));
+        builder_.CreateAlignedStore(load(output.value, c), builder_.CreateInBoundsGEP(float_, base, index_),
+                                    llvm::Align(4));
+      }
+    }
+  }
+
+  const ShadeIR& ir_;
+  int width_;
+  llvm::Module& module_;
+  llvm::LLVMContext& context_;
+  llvm::IRBuilder<> builder_;
+  llvm::Type* float_ = nullptr;
+  llvm::FixedVectorType* vector_ = nullptr;
+  llvm::PointerType* ptr_ = nullptr;
+  llvm::Function* function_ = nullptr;
+  llvm::BasicBlock* entry_ = nullptr;
+  llvm::Value *params_ = nullptr, *inputs_ = nullptr, *time_ = nullptr, *frame_ = nullptr, *outputs_ = nullptr,
+              *count_ = nullptr, *index_ = nullptr;
+  llvm::GlobalVariable* data_ = nullptr;
+  std::vector<llvm::AllocaInst*> registers_;
+  std::map<std::uint32_t, llvm::Value*> tables_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                         const std::string& function_name) {
+  if (width != 4 && width != 8 && width != 16) return invalid_input("vector width must be 4, 8 or 16");
+  std::unique_ptr<llvm::Module> module = load_op_library(context);
+  if (!module) return failure("the embedded op library bitcode is unreadable");
+  module->setModuleIdentifier(function_name);
+  // The library is only there to be inlined into this kernel.
+  for (llvm::Function& function : *module) {
+    if (function.isDeclaration()) continue;
+    function.setLinkage(llvm::GlobalValue::InternalLinkage);
+    function.removeFnAttr(llvm::Attribute::NoInline);
+    function.removeFnAttr(llvm::Attribute::OptimizeNone);
+    function.addFnAttr(llvm::Attribute::AlwaysInline);
+  }
+  Result<llvm::Function*> kernel = KernelEmitter(ir, width, *module).emit(function_name);
+  if (!kernel) return kernel.error();
+  return module;
+}
+
+}  // namespace shadetree

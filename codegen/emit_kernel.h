@@ -1,0 +1,36 @@
+// ShadeIR -> LLVM IR: one kernel function that evaluates the program over
+// `count` samples (a multiple of the vector width), `width` samples at a
+// time as <width x float> vectors.
+//
+//   void kernel(const float* params, const float* const* input_planes,
+//               float time, float frame, float* const* output_planes,
+//               int64_t count)
+//
+// input_planes: P.x P.y P.z N.x N.y N.z uv.x uv.y filter_width density.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "graph/diagnostic.h"
+#include "graph/shade_ir.h"
+
+namespace llvm {
+class LLVMContext;
+class Module;
+}  // namespace llvm
+
+namespace shadetree {
+
+inline constexpr int kernel_input_plane_count = 10;
+
+using KernelFunction = void (*)(const float* params, const float* const* input_planes, float time, float frame,
+                                float* const* output_planes, std::int64_t count);
+
+// The module holds the kernel (named `function_name`) and the op library it
+// calls, marked for inlining.
+Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                         const std::string& function_name);
+
+}  // namespace shadetree

@@ -1,0 +1,294 @@
+#include "jit/jit_compiler.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+#include <llvm/ExecutionEngine/ObjectCache.h>
+#include <llvm/ExecutionEngine/Orc/CompileUtils.h>
+#include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
+#include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/LegacyPassManager.h>
+#include <llvm/IR/Module.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/MemoryBuffer.h>
+#include <llvm/Support/TargetSelect.h>
+#include <llvm/Support/xxhash.h>
+#include <llvm/Target/TargetMachine.h>
+#include <llvm/TargetParser/Host.h>
+
+#include "nodes/noise_tables.h"
+
+namespace shadetree {
+namespace {
+
+// Bump when generated code changes meaning, so old disk caches are ignored.
+constexpr const char* cache_format = "shadetree-kernel-1";
+
+std::string error_text(llvm::Error error) {
+  std::string text;
+  llvm::handleAllErrors(std::move(error), [&](const llvm::ErrorInfoBase& info) { text += info.message(); });
+  return text;
+}
+
+std::string host_features() {
+  llvm::SubtargetFeatures features;
+  for (const auto& [name, enabled] : llvm::sys::getHostCPUFeatures()) features.AddFeature(name, enabled);
+  return features.getString();
+}
+
+// A canonical text of everything the machine code depends on.
+std::string canonical_key(const ShadeIR& ir, int width) {
+  std::ostringstream text;
+  text << cache_format << "\n" << width << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  for (const IrInstr& instr : ir.code) {
+    text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
+         << ' ' << instr.uniform << ' ' << instr.data_offset << ' ' << instr.data_count << ' ' << instr.immediate[0]
+         << ' ' << instr.immediate[1];
+    for (int a = 0; a < instr.arg_count; ++a) text << ' ' << instr.args[a];
+    text << '\n';
+  }
+  text.write(reinterpret_cast<const char*>(ir.data.data()), static_cast<std::streamsize>(ir.data.size() * sizeof(float)));
+  for (const IrOutput& output : ir.outputs) text << "out " << output.value << ' ' << static_cast<int>(output.type) << '\n';
+  return text.str();
+}
+
+std::string kernel_name(const std::string& key) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(llvm::xxh3_64bits(llvm::StringRef(key))));
+  return std::string("shade_kernel_") + hex;
+}
+
+std::filesystem::path cache_folder(const JitSettings& settings) {
+  if (!settings.cache_folder.empty()) return settings.cache_folder;
+  if (const char* folder = std::getenv("SHADETREE_CACHE_DIR"); folder && *folder) return folder;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "shadetree";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".cache" / "shadetree";
+  return {};
+}
+
+// Writes each compiled object next to its kernel name; reading is done by
+// the compiler below before any IR is built.
+class DiskObjectCache final : public llvm::ObjectCache {
+ public:
+  void notifyObjectCompiled(const llvm::Module* module, llvm::MemoryBufferRef object) override {
+    if (folder_.empty()) return;
+    std::error_code error;
+    std::filesystem::create_directories(folder_, error);
+    const auto target = folder_ / (module->getModuleIdentifier() + ".o");
+    const auto temporary = folder_ / (module->getModuleIdentifier() + ".o.partial");
+    {
+      std::ofstream file(temporary, std::ios::binary);
+      file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
+      if (!file) return;
+    }
+    std::filesystem::rename(temporary, target, error);
+  }
+  std::unique_ptr<llvm::MemoryBuffer> getObject(const llvm::Module*) override { return nullptr; }
+  void set_folder(std::filesystem::path folder) { folder_ = std::move(folder); }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+class Jit {
+ public:
+  static Jit& instance() {
+    static Jit jit;
+    return jit;
+  }
+
+  Result<CompiledKernel> compile(const ShadeIR& ir, int width, const JitSettings& settings) {
+    if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
+    if (width == 0) width = host_vector_width();
+    const auto start = std::chrono::steady_clock::now();
+    const std::string name = kernel_name(canonical_key(ir, width));
+    std::lock_guard lock(mutex_);
+    auto elapsed = [&] {
+      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    if (auto found = kernels_.find(name); found != kernels_.end()) {
+      CompiledKernel kernel = found->second;
+      kernel.cache = CacheHit::memory;
+      kernel.compile_milliseconds = elapsed();
+      return kernel;
+    }
+    if (auto address = jit_->lookup(name)) {  // compiled before, then forgotten
+      return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::memory});
+    } else {
+      llvm::consumeError(address.takeError());
+    }
+    const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
+    object_cache_->set_folder(folder);
+    if (!folder.empty()) {
+      auto object = llvm::MemoryBuffer::getFile((folder / (name + ".o")).string());
+      if (object) {
+        if (llvm::Error error = jit_->addObjectFile(std::move(*object))) {
+          llvm::consumeError(std::move(error));
+        } else if (auto address = jit_->lookup(name)) {
+          return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::disk});
+        } else {
+          llvm::consumeError(address.takeError());
+        }
+      }
+    }
+    auto context = std::make_unique<llvm::LLVMContext>();
+    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name);
+    if (!module) return module.error();
+    if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
+      return failure("JIT: " + error_text(std::move(error)));
+    auto address = jit_->lookup(name);
+    if (!address) return failure("JIT: " + error_text(address.takeError()));
+    return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::none});
+  }
+
+  void forget() {
+    std::lock_guard lock(mutex_);
+    kernels_.clear();
+  }
+
+  Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                               const std::string& name, bool optimize = true) {
+    if (!target_machine_) return failure("cannot start the LLVM JIT: " + startup_error_);
+    Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name);
+    if (!module) return module.error();
+    llvm::Module& m = **module;
+    m.setDataLayout(target_machine_->createDataLayout());
+    m.setTargetTriple(target_machine_->getTargetTriple().str());
+    for (llvm::Function& function : m) {
+      if (function.isDeclaration()) continue;
+      function.addFnAttr("target-cpu", target_machine_->getTargetCPU());
+      function.addFnAttr("target-features", target_machine_->getTargetFeatureString());
+    }
+    if (optimize) optimize_module(m);
+    return module;
+  }
+
+  Result<std::string> assembly(llvm::Module& module) {
+    llvm::SmallString<0> text;
+    llvm::raw_svector_ostream stream(text);
+    llvm::legacy::PassManager passes;
+    if (target_machine_->addPassesToEmitFile(passes, stream, nullptr, llvm::CodeGenFileType::AssemblyFile))
+      return failure("LLVM cannot emit assembly for this target");
+    passes.run(module);
+    return std::string(text.str());
+  }
+
+ private:
+  Jit() {
+    llvm::InitializeNativeTarget();
+    llvm::InitializeNativeTargetAsmPrinter();
+    llvm::InitializeNativeTargetAsmParser();
+    auto machine_builder = llvm::orc::JITTargetMachineBuilder::detectHost();
+    if (!machine_builder) {
+      startup_error_ = error_text(machine_builder.takeError());
+      return;
+    }
+    machine_builder->setCPU(llvm::sys::getHostCPUName().str());
+    machine_builder->getFeatures().addFeaturesVector(
+        llvm::SubtargetFeatures(host_features()).getFeatures());
+    machine_builder->setCodeGenOptLevel(llvm::CodeGenOptLevel::Aggressive);
+    auto target_machine = machine_builder->createTargetMachine();
+    if (!target_machine) {
+      startup_error_ = error_text(target_machine.takeError());
+      return;
+    }
+    target_machine_ = std::move(*target_machine);
+    object_cache_ = std::make_unique<DiskObjectCache>();
+    auto jit = llvm::orc::LLJITBuilder()
+                   .setJITTargetMachineBuilder(*machine_builder)
+                   .setCompileFunctionCreator([this](llvm::orc::JITTargetMachineBuilder builder)
+                                                  -> llvm::Expected<std::unique_ptr<llvm::orc::IRCompileLayer::IRCompiler>> {
+                     auto machine = builder.createTargetMachine();
+                     if (!machine) return machine.takeError();
+                     return std::make_unique<llvm::orc::TMOwningSimpleCompiler>(std::move(*machine),
+                                                                                object_cache_.get());
+                   })
+                   .create();
+    if (!jit) {
+      startup_error_ = error_text(jit.takeError());
+      return;
+    }
+    jit_ = std::move(*jit);
+    // Kernels call libm (sinf, powf, ...) exactly as the interpreter does.
+    auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
+        jit_->getDataLayout().getGlobalPrefix());
+    if (!process) {
+      startup_error_ = error_text(process.takeError());
+      jit_.reset();
+      return;
+    }
+    jit_->getMainJITDylib().addGenerator(std::move(*process));
+  }
+
+  void optimize_module(llvm::Module& module) {
+    llvm::LoopAnalysisManager loops;
+    llvm::FunctionAnalysisManager functions;
+    llvm::CGSCCAnalysisManager cgscc;
+    llvm::ModuleAnalysisManager modules;
+    llvm::PassBuilder builder(target_machine_.get());
+    builder.registerModuleAnalyses(modules);
+    builder.registerCGSCCAnalyses(cgscc);
+    builder.registerFunctionAnalyses(functions);
+    builder.registerLoopAnalyses(loops);
+    builder.crossRegisterProxies(loops, functions, cgscc, modules);
+    builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
+  }
+
+  Result<CompiledKernel> remember(const std::string& name, CompiledKernel kernel) {
+    kernels_[name] = kernel;
+    return kernel;
+  }
+
+  std::string startup_error_;
+  std::unique_ptr<llvm::TargetMachine> target_machine_;
+  std::unique_ptr<DiskObjectCache> object_cache_;
+  std::unique_ptr<llvm::orc::LLJIT> jit_;
+  std::mutex mutex_;
+  std::map<std::string, CompiledKernel> kernels_;
+};
+
+}  // namespace
+
+int host_vector_width() {
+  const auto features = llvm::sys::getHostCPUFeatures();
+  auto has = [&](const char* name) {
+    auto found = features.find(name);
+    return found != features.end() && found->second;
+  };
+  if (has("avx512f")) return 16;
+  if (has("avx2")) return 8;
+  return 4;
+}
+
+Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
+  return Jit::instance().compile(ir, width, settings);
+}
+
+void forget_compiled_kernels() { Jit::instance().forget(); }
+
+Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing) {
+  if (width == 0) width = host_vector_width();
+  llvm::LLVMContext context;
+  Result<std::unique_ptr<llvm::Module>> module = Jit::instance().build_optimized_module(
+      ir, width, context, "shade_kernel", listing != Listing::llvm_ir);
+  if (!module) return module.error();
+  if (listing == Listing::assembly) return Jit::instance().assembly(**module);
+  std::string text;
+  llvm::raw_string_ostream stream(text);
+  if (listing == Listing::llvm_ir) {
+    (*module)->getFunction("shade_kernel")->print(stream);
+  } else {
+    (*module)->print(stream, nullptr);
+  }
+  return text;
+}
+
+}  // namespace shadetree

@@ -1,0 +1,47 @@
+// ORC LLJIT for shade kernels: host CPU, full O3 pipeline, and two caches.
+// In memory, compiled kernels are kept by a hash of the optimized ShadeIR
+// (and width and CPU), so a second compile of the same graph is a lookup;
+// params are passed at call time, so changing one reuses the machine code.
+// On disk (a user cache folder), each kernel's object file is kept so that
+// a second run of the same graph skips compilation altogether.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "codegen/emit_kernel.h"
+#include "graph/diagnostic.h"
+#include "graph/shade_ir.h"
+
+namespace shadetree {
+
+// 16 with AVX-512, 8 with AVX2, else 4.
+int host_vector_width();
+
+enum class CacheHit { none, memory, disk };
+
+struct CompiledKernel {
+  KernelFunction function = nullptr;
+  int width = 0;
+  double compile_milliseconds = 0;
+  CacheHit cache = CacheHit::none;
+};
+
+struct JitSettings {
+  bool disk_cache = true;
+  std::string cache_folder;  // empty: $SHADETREE_CACHE_DIR, else $XDG_CACHE_HOME/shadetree, else ~/.cache/shadetree
+};
+
+// Compiles (or finds) the kernel for `ir` at `width` (0: host width).
+// Thread-safe. LLVM failures come back as diagnostics with status 1.
+Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
+
+// Drops the in-memory cache (for cold-compile measurements); kernels
+// already handed out stay valid.
+void forget_compiled_kernels();
+
+// The kernel's LLVM IR before or after optimization, or its assembly.
+enum class Listing { llvm_ir, optimized_llvm_ir, assembly };
+Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing);
+
+}  // namespace shadetree

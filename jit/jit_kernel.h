@@ -1,0 +1,14 @@
+// The JIT backend behind the Kernel interface.
+#pragma once
+
+#include <memory>
+
+#include "graph/kernel.h"
+#include "jit/jit_compiler.h"
+
+namespace shadetree {
+
+// Compiles `ir` (or finds it in the caches) at `width` lanes (0: host).
+Result<std::unique_ptr<Kernel>> make_jit_kernel(ShadeIR ir, int width = 0, const JitSettings& settings = {});
+
+}  // namespace shadetree
