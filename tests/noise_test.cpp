@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "nodes/semantics/noise.h"
@@ -70,6 +71,14 @@ TEST(Noise, IsPeriodicWithTheTableSize) {
 TEST(Noise, HandlesHugeAndNegativeCoordinates) {
   EXPECT_TRUE(std::isfinite(noise(tables(), 3e9f, -7e12f, 1e30f)));
   EXPECT_TRUE(std::isfinite(noise(tables(), -0.5f, -1e4f, -123.25f)));
+}
+
+TEST(Noise, NonFiniteCoordinatesStayInsideTheTables) {
+  const float infinity = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (float bad : {infinity, -infinity, nan}) {
+    EXPECT_FALSE(std::isfinite(noise(tables(), bad, 0.5f, 0.5f)));
+    EXPECT_FALSE(std::isfinite(noise_improved(0.5f, bad, 0.5f)));
+  }
 }
 
 TEST(Dnoise, AgreesWithFiniteDifferences) {

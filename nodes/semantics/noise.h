@@ -33,17 +33,19 @@ I noise_phi(const NoiseTables& tables, I i) {
 // The lattice cell of a coordinate: floor(x) for the offsets, and floor(x)
 // mod n as an integer for the hash. Reducing mod n in float first keeps the
 // conversion to int defined however large x is (floats above 2^24 are
-// integers, so the reduction is exact).
+// integers, so the reduction is exact); an infinite or NaN coordinate
+// hashes as cell 0 instead of indexing outside the tables.
 template <class F>
 struct LatticeCoordinate {
   F cell;               // floor(x)
-  IntOf<F> hash_index;  // floor(x) mod n
+  IntOf<F> hash_index;  // floor(x) mod n, in [0, n)
 };
 
 template <class F>
 LatticeCoordinate<F> lattice_coordinate(F x) {
   F cell = floor(x);
   F wrapped = cell - floor(cell * (1.0f / noise_table_size)) * float(noise_table_size);
+  wrapped = select(both(wrapped >= 0.0f, wrapped < float(noise_table_size)), wrapped, splat<F>(0.0f));
   return {cell, to_int(wrapped)};
 }
 
@@ -174,14 +176,17 @@ F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width
 }
 
 // Fractional Brownian motion: octave i has frequency lacunarity^i and
-// amplitude gain^i; it takes part while 1 / frequency > filter_width.
+// amplitude gain^i; octaves take part until the first one whose period
+// 1 / frequency is not above filter_width (a lane never resumes: with a
+// lacunarity below 1 the frequency could fall again).
 template <class F>
 F fbm(const NoiseTables& tables, F x, F y, F z, F octaves, F lacunarity, F gain, F filter_width) {
   F sum = splat<F>(0.0f);
   F frequency = splat<F>(1.0f);
   F amplitude = splat<F>(1.0f);
+  auto active = splat<F>(0.0f) < octaves;
   for (int octave = 0; octave < max_octaves; ++octave) {
-    auto active = both(splat<F>(float(octave)) < octaves, frequency * filter_width < 1.0f);
+    active = both(active, both(splat<F>(float(octave)) < octaves, frequency * filter_width < 1.0f));
     if (!any(active)) break;
     F n = noise(tables, x * frequency, y * frequency, z * frequency);
     sum = sum + select(active, n * amplitude, splat<F>(0.0f));

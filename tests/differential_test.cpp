@@ -1,0 +1,325 @@
+// Differential testing: the JIT must compute what the interpreter computes,
+// within 1e-5 absolute or relative, for the gallery, for every node of the
+// library over every type it accepts, and for hundreds of random well-typed
+// graphs; on samples that include lattice points, negative and large
+// (1e4) coordinates and vector tails.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <sstream>
+
+#include "graph/check.h"
+#include "graph/compile_graph.h"
+#include "graph/lower.h"
+#include "graph/parse.h"
+#include "interp/interpreter.h"
+#include "jit/jit_kernel.h"
+#include "nodes/registry.h"
+
+namespace shadetree {
+namespace {
+
+// 517 samples: two interpreter blocks and a tail, and a tail for every
+// vector width.
+struct SampleSet {
+  static constexpr std::size_t count = 517;
+  std::vector<float> planes[kernel_input_plane_count];
+
+  SampleSet() {
+    std::mt19937 random(1989);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (auto& plane : planes) plane.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      float p[3];
+      switch (i % 5) {
+        case 0:  // lattice points
+          for (float& c : p) c = std::round(unit(random) * 4.0f);
+          break;
+        case 1:  // negative coordinates
+          for (float& c : p) c = -std::fabs(unit(random)) * 7.0f;
+          break;
+        case 2:  // far from the origin
+          for (float& c : p) c = 1e4f + unit(random) * 3.0f;
+          break;
+        default:
+          for (float& c : p) c = unit(random) * 3.0f;
+      }
+      for (int c = 0; c < 3; ++c) planes[c][i] = p[c];
+      const float n[3] = {unit(random), unit(random), unit(random) + 2.0f};
+      const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (int c = 0; c < 3; ++c) planes[3 + c][i] = n[c] / length;
+      planes[6][i] = (unit(random) + 1.0f) / 2.0f;
+      planes[7][i] = (unit(random) + 1.0f) / 2.0f;
+      const float widths[] = {0.0f, 0.001f, 0.01f, 0.1f, 0.7f};
+      planes[8][i] = widths[i % 5];
+      planes[9][i] = (unit(random) + 1.0f) / 2.0f;
+    }
+  }
+
+  KernelInputs inputs() const {
+    KernelInputs in;
+    for (int c = 0; c < 3; ++c) {
+      in.P[c] = planes[c].data();
+      in.N[c] = planes[3 + c].data();
+    }
+    in.uv[0] = planes[6].data();
+    in.uv[1] = planes[7].data();
+    in.filter_width = planes[8].data();
+    in.density = planes[9].data();
+    in.time = 0.75f;
+    in.frame = 18.0f;
+    return in;
+  }
+};
+
+const SampleSet& samples() {
+  static const SampleSet set;
+  return set;
+}
+
+std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params) {
+  std::size_t planes = 0;
+  for (const IrOutput& output : kernel.ir().outputs) planes += static_cast<std::size_t>(component_count(output.type));
+  std::vector<std::vector<float>> results(planes, std::vector<float>(SampleSet::count, -12345.0f));
+  std::vector<float*> pointers;
+  for (auto& plane : results) pointers.push_back(plane.data());
+  kernel.run(params.data(), samples().inputs(), pointers.data(), SampleSet::count);
+  return results;
+}
+
+bool agree(float a, float b) {
+  if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+  if (a == b) return true;
+  const float difference = std::fabs(a - b);
+  return difference <= 1e-5f || difference <= 1e-5f * std::max(std::fabs(a), std::fabs(b));
+}
+
+// Compares the backends on `ir`; returns "" or the first disagreement.
+std::string compare_backends(const std::string& name, const ShadeIR& ir, const std::vector<float>& params,
+                             int width) {
+  auto reference = run(*make_interpreted_kernel(ir), params);
+  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}});
+  if (!jit) return name + ": JIT failed: " + jit.error().to_string();
+  auto compiled = run(**jit, params);
+  for (std::size_t plane = 0; plane < reference.size(); ++plane)
+    for (std::size_t i = 0; i < SampleSet::count; ++i)
+      if (!agree(reference[plane][i], compiled[plane][i])) {
+        std::ostringstream message;
+        message.precision(9);
+        message << name << " (width " << width << "): output plane " << plane << " sample " << i << " at P = ("
+                << samples().planes[0][i] << ", " << samples().planes[1][i] << ", " << samples().planes[2][i]
+                << "): interp " << reference[plane][i] << ", jit " << compiled[plane][i];
+        return message.str();
+      }
+  return "";
+}
+
+Result<LoadedGraph> compile_text(const std::string& text) {
+  Result<Graph> parsed = parse_graph(text, "generated.json");
+  if (!parsed) return parsed.error();
+  auto graph = std::make_shared<const Graph>(*parsed);
+  Result<CheckedGraph> checked = check_graph(graph);
+  if (!checked) return checked.error();
+  Result<ShadeIR> ir = lower(*checked);
+  if (!ir) return ir.error();
+  LoadedGraph loaded{graph, std::move(*ir), {}};
+  loaded.params = param_block(*graph, loaded.ir);
+  return loaded;
+}
+
+// --- the gallery -------------------------------------------------------
+
+std::vector<std::string> gallery_graphs() {
+  std::vector<std::string> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(SHADETREE_SOURCE_DIR "/graphs"))
+    if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+class GalleryDifferential : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
+  Result<LoadedGraph> loaded = load_and_compile(GetParam(), {});
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (int width : {4, 8, 16})
+    EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
+}
+
+INSTANTIATE_TEST_SUITE_P(Gallery, GalleryDifferential, ::testing::ValuesIn(gallery_graphs()),
+                         [](const auto& info) { return std::filesystem::path(info.param).stem().string(); });
+
+// --- every node, over every type it accepts ------------------------------
+
+// Varying sources of each type, built from the inputs.
+const char* const preamble = R"(
+  {"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
+  {"id": "float_a", "op": "add", "in": {"a": "s.x", "b": "s.y"}},
+  {"id": "float_b", "op": "mul", "in": {"a": "s.z", "b": 0.37}},
+  {"id": "float_c", "op": "sub", "in": {"a": "s.y", "b": 0.5}},
+  {"id": "vec2_a", "op": "vec2", "in": {"x": "s.x", "y": "s.z"}},
+  {"id": "vec2_b", "op": "uv"},
+  {"id": "vec3_a", "op": "P"}, {"id": "vec3_b", "op": "N"},
+  {"id": "color_a", "op": "to_color", "in": {"v": "p"}},
+  {"id": "color_b", "op": "to_color", "in": {"v": "vec3_b"}},
+  {"id": "bool_a", "op": "lt", "in": {"a": "s.x", "b": "s.y"}},
+  {"id": "fw", "op": "filter_width"})";
+
+std::string attributes_for(OpId op) {
+  switch (op) {
+    case OpId::spline: return R"(, "basis": "catmull-rom", "knots": [[1,0,0],[0.9,0.5,0.1],[0.2,0.8,0.3],[0,0,1],[0.5,0.5,0.5]])";
+    case OpId::color_table: return R"(, "entries": [[1,0,0],[0,1,0],[0,0,1],[1,1,0]])";
+    case OpId::table1d: return R"(, "values": [0, 0.8, 0.2, 1, 0.4], "domain": [-2, 3])";
+    case OpId::table2d: return R"(, "values": [[0, 1, 0.5], [0.2, 0.9, 0.1]])";
+    case OpId::noise: case OpId::turbulence: return R"(, "seed": 7)";
+    default: return "";
+  }
+}
+
+// A source for an input of type `type`; `which` picks among alternatives.
+std::string source_for(Type type, const std::string& port, int which) {
+  const char* letter = which % 2 == 0 ? "a" : "b";
+  switch (type) {
+    case Type::float_:
+      if (port == "filter_width") return "\"fw\"";
+      return std::string("\"float_") + (which % 3 == 0 ? "a" : which % 3 == 1 ? "b" : "c") + "\"";
+    case Type::int_: return port == "iterations" ? "40" : "5";
+    case Type::bool_: return "\"bool_a\"";
+    case Type::vec2: return std::string("\"vec2_") + letter + "\"";
+    case Type::vec3: return std::string("\"vec3_") + letter + "\"";
+    case Type::color: return std::string("\"color_") + letter + "\"";
+  }
+  return "0";
+}
+
+std::vector<std::string> single_node_graphs() {
+  std::vector<std::string> graphs;
+  for (const OpDef& op : all_ops()) {
+    if (op.id == OpId::density) continue;  // volume only: covered with kind volume below
+    std::vector<Type> instances{Type::float_};
+    if (op.generic == GenericSet::numeric && !op.type_from_knots)
+      instances = {Type::float_, Type::vec2, Type::vec3, Type::color};
+    if (op.generic == GenericSet::vectors) instances = {Type::vec2, Type::vec3, Type::color};
+    for (Type instance : instances) {
+      std::ostringstream text;
+      text << R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "name": ")" << op.name << "_"
+           << type_name(instance) << R"(", "nodes": [)" << preamble << R"(, {"id": "node", "op": ")" << op.name
+           << R"(", "in": {)";
+      for (std::size_t i = 0; i < op.inputs.size(); ++i) {
+        const PortSpec& port = op.inputs[i];
+        const Type type = port.rule == TypeRule::generic ? instance : port.type;
+        text << (i ? ", " : "") << '"' << port.name << "\": " << source_for(type, port.name, static_cast<int>(i));
+      }
+      text << "}" << attributes_for(op.id) << R"(}], "outputs": {"color": "float_a")";
+      for (const PortSpec& output : op.outputs) text << ", \"" << output.name << "\": \"node." << output.name << '"';
+      text << "}}";
+      graphs.push_back(text.str());
+    }
+  }
+  return graphs;
+}
+
+TEST(NodeDifferential, EveryNodeAgreesOverEveryType) {
+  int compared = 0;
+  for (const std::string& text : single_node_graphs()) {
+    Result<LoadedGraph> loaded = compile_text(text);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string() << "\n" << text;
+    EXPECT_EQ(compare_backends(loaded->graph->name, loaded->ir, loaded->params, 8), "");
+    ++compared;
+  }
+  EXPECT_GT(compared, static_cast<int>(all_ops().size()));
+}
+
+TEST(NodeDifferential, DensityInputAgreesInVolumes) {
+  Result<LoadedGraph> loaded = compile_text(R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
+      "nodes": [{"id": "p", "op": "P"}, {"id": "d", "op": "density"},
+                {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 2}},
+                {"id": "out", "op": "union", "in": {"a": "d", "b": "s"}}],
+      "outputs": {"density": "out"}})");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  EXPECT_EQ(compare_backends("density", loaded->ir, loaded->params, 16), "");
+}
+
+// --- random well-typed graphs ---------------------------------------------
+
+// Grows a graph one node at a time from a pool of typed values, picking ops
+// from every family (conditionals included) and wiring each input from a
+// value of an acceptable type.
+class RandomGraph {
+ public:
+  explicit RandomGraph(std::uint32_t seed) : random_(seed) {}
+
+  std::string generate(int node_count) {
+    pool_ = {{"float_a", Type::float_}, {"float_b", Type::float_}, {"float_c", Type::float_},
+             {"vec2_a", Type::vec2},    {"vec2_b", Type::vec2},    {"vec3_a", Type::vec3},
+             {"vec3_b", Type::vec3},    {"color_a", Type::color},  {"color_b", Type::color},
+             {"bool_a", Type::bool_},   {"fw", Type::float_}};
+    std::ostringstream nodes;
+    nodes << preamble;
+    const auto ops = all_ops();
+    for (int n = 0; n < node_count; ++n) {
+      const OpDef& op = ops[pick(ops.size())];
+      if (op.family == OpFamily::input || op.id == OpId::split) continue;
+      Type instance = Type::float_;
+      if (op.generic == GenericSet::numeric && !op.type_from_knots) instance = pick_of({Type::float_, Type::vec2, Type::vec3, Type::color});
+      if (op.generic == GenericSet::vectors) instance = pick_of({Type::vec2, Type::vec3, Type::color});
+      const std::string id = "n" + std::to_string(n);
+      nodes << R"(, {"id": ")" << id << R"(", "op": ")" << op.name << R"(", "in": {)";
+      for (std::size_t i = 0; i < op.inputs.size(); ++i) {
+        const PortSpec& port = op.inputs[i];
+        const Type type = port.rule == TypeRule::generic ? instance : port.type;
+        // Generic inputs take exactly T, so that T is what the checker infers.
+        nodes << (i ? ", " : "") << '"' << port.name << "\": " << wire(type, port.name, port.rule == TypeRule::generic);
+      }
+      nodes << "}" << attributes_for(op.id) << "}";
+      Type output = op.outputs[0].rule == TypeRule::generic ? instance : op.outputs[0].type;
+      if (op.id == OpId::spline || op.id == OpId::color_table) output = Type::color;
+      pool_.push_back({id, output});
+    }
+    std::ostringstream outputs;
+    outputs << R"("color": "float_a")";
+    for (int k = 0; k < 4; ++k) outputs << ", \"out" << k << "\": \"" << pool_[pool_.size() - 1 - k * 3].first << '"';
+    return R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "nodes": [)" + nodes.str() +
+           "], \"outputs\": {" + outputs.str() + "}}";
+  }
+
+ private:
+  std::size_t pick(std::size_t count) { return std::uniform_int_distribution<std::size_t>(0, count - 1)(random_); }
+  Type pick_of(std::initializer_list<Type> types) { return *(types.begin() + pick(types.size())); }
+
+  // A recent value that converts to `type` (floats splat into vectors), or
+  // a literal where the type needs one.
+  std::string wire(Type type, const std::string& port, bool exact) {
+    if (type == Type::int_) return port == "iterations" ? "24" : std::to_string(1 + pick(6));
+    if (port == "filter_width") return "\"fw\"";
+    std::vector<std::string> candidates;
+    for (const auto& [id, value_type] : pool_)
+      if (value_type == type || (!exact && value_type == Type::float_ && is_vector(type))) candidates.push_back(id);
+    if (candidates.empty()) return type == Type::bool_ ? "true" : "0.5";
+    // Prefer recent values so that graphs grow deep, not wide.
+    const std::size_t recent = std::min<std::size_t>(candidates.size(), 6);
+    return '"' + candidates[candidates.size() - 1 - pick(recent)] + '"';
+  }
+
+  std::mt19937 random_;
+  std::vector<std::pair<std::string, Type>> pool_;
+};
+
+TEST(RandomGraphDifferential, HundredsOfRandomGraphsAgree) {
+  int compared = 0;
+  for (std::uint32_t seed = 1; seed <= 240; ++seed) {
+    const std::string text = RandomGraph(seed).generate(18);
+    Result<LoadedGraph> loaded = compile_text(text);
+    ASSERT_TRUE(loaded.ok()) << "seed " << seed << ": " << loaded.error().to_string() << "\n" << text;
+    const std::string disagreement =
+        compare_backends("random graph " + std::to_string(seed), loaded->ir, loaded->params, seed % 3 == 0 ? 4 : 16);
+    EXPECT_EQ(disagreement, "") << text;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 240);
+}
+
+}  // namespace
+}  // namespace shadetree
