@@ -2,19 +2,25 @@
 
 #include "graph/check.h"
 #include "graph/lower.h"
+#include "graph/optimize.h"
+#include "interp/interpreter.h"
 #include "graph/parse.h"
 
 namespace shadetree {
 
-Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments) {
-  Result<Graph> parsed = load_graph(path);
+namespace {
+
+Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path,
+                                   const std::vector<std::string>& assignments) {
   if (!parsed) return parsed.error();
   auto graph = std::make_shared<const Graph>(std::move(*parsed));
   Result<CheckedGraph> checked = check_graph(graph);
   if (!checked) return checked.error();
   Result<ShadeIR> ir = lower(*checked);
   if (!ir) return ir.error();
-  LoadedGraph loaded{graph, std::move(*ir), {}};
+  LoadedGraph loaded{graph, std::move(*ir), {}, 0};
+  loaded.instructions_before_optimization = static_cast<int>(loaded.ir.code.size());
+  optimize(loaded.ir, evaluate_constant_program);
   loaded.params = param_block(*graph, loaded.ir);
   for (const std::string& assignment : assignments) {
     const auto equals = assignment.find('=');
@@ -41,6 +47,17 @@ Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<
                         "--set: unknown param \"" + name + "\" (params: " + (known.empty() ? "none" : known) + ")"};
   }
   return loaded;
+}
+
+}  // namespace
+
+Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments) {
+  return compile_parsed(load_graph(path), path, assignments);
+}
+
+Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
+                                       const std::vector<std::string>& assignments) {
+  return compile_parsed(parse_graph(json, file), file, assignments);
 }
 
 }  // namespace shadetree

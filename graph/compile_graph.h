@@ -14,11 +14,16 @@ namespace shadetree {
 
 struct LoadedGraph {
   std::shared_ptr<const Graph> graph;
-  ShadeIR ir;
+  ShadeIR ir;                 // optimized
   std::vector<float> params;  // the uniform block, overrides applied
+  int instructions_before_optimization = 0;
 };
 
 // `assignments` are NAME=VALUE strings (shadetree's --set).
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments);
+
+// The same from JSON text; `file` names it in messages.
+Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
+                                       const std::vector<std::string>& assignments = {});
 
 }  // namespace shadetree

@@ -3,8 +3,6 @@
 
 #include <map>
 
-#include "graph/passes/eliminate_dead_code.h"
-#include "graph/passes/place_conditional_regions.h"
 
 namespace shadetree {
 namespace {
@@ -136,12 +134,7 @@ class Lowering {
 
 }  // namespace
 
-Result<ShadeIR> lower(const CheckedGraph& graph) {
-  ShadeIR ir = Lowering(graph).run();
-  eliminate_dead_code(ir);
-  place_conditional_regions(ir);
-  return ir;
-}
+Result<ShadeIR> lower(const CheckedGraph& graph) { return Lowering(graph).run(); }
 
 std::vector<float> param_block(const Graph& graph, const ShadeIR& ir) {
   std::vector<float> block(static_cast<std::size_t>(ir.param_block_size), 0.0f);

@@ -1,7 +1,7 @@
 // Stage 3: CheckedGraph -> ShadeIR. Inlines user-defined functions, turns
 // implicit conversions into component reads, lays out params in a uniform
-// block, then runs the passes every backend relies on (dead code
-// elimination, conditional region placement).
+// block and marks uniform values. The result is one instruction per node
+// use, unoptimized: graph/optimize.h comes next.
 #pragma once
 
 #include "graph/check.h"

@@ -141,6 +141,16 @@ class InterpretedKernel final : public Kernel {
 
 }  // namespace
 
+std::vector<float> evaluate_constant_program(const ShadeIR& program) {
+  std::size_t planes = 0;
+  for (const IrOutput& output : program.outputs) planes += static_cast<std::size_t>(component_count(output.type));
+  std::vector<float> values(planes);
+  std::vector<float*> pointers;
+  for (float& value : values) pointers.push_back(&value);
+  InterpretedKernel(program).run(nullptr, KernelInputs{}, pointers.data(), 1);
+  return values;
+}
+
 std::unique_ptr<Kernel> make_interpreted_kernel(ShadeIR ir) {
   return std::make_unique<InterpretedKernel>(std::move(ir));
 }

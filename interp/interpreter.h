@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "graph/kernel.h"
 
@@ -14,5 +15,9 @@ namespace shadetree {
 inline constexpr int interpreter_block_size = 256;
 
 std::unique_ptr<Kernel> make_interpreted_kernel(ShadeIR ir);
+
+// Runs a program that reads no inputs for one sample; returns its output
+// planes in order. The evaluator of constant folding (graph/optimize.h).
+std::vector<float> evaluate_constant_program(const ShadeIR& program);
 
 }  // namespace shadetree

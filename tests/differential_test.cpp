@@ -10,10 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "graph/check.h"
 #include "graph/compile_graph.h"
-#include "graph/lower.h"
-#include "graph/parse.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "nodes/registry.h"
@@ -116,18 +113,7 @@ std::string compare_backends(const std::string& name, const ShadeIR& ir, const s
   return "";
 }
 
-Result<LoadedGraph> compile_text(const std::string& text) {
-  Result<Graph> parsed = parse_graph(text, "generated.json");
-  if (!parsed) return parsed.error();
-  auto graph = std::make_shared<const Graph>(*parsed);
-  Result<CheckedGraph> checked = check_graph(graph);
-  if (!checked) return checked.error();
-  Result<ShadeIR> ir = lower(*checked);
-  if (!ir) return ir.error();
-  LoadedGraph loaded{graph, std::move(*ir), {}};
-  loaded.params = param_block(*graph, loaded.ir);
-  return loaded;
-}
+Result<LoadedGraph> compile_text(const std::string& text) { return compile_graph_text(text, "generated.json"); }
 
 // --- the gallery -------------------------------------------------------
 

@@ -4,9 +4,7 @@
 
 #include <cmath>
 
-#include "graph/check.h"
-#include "graph/lower.h"
-#include "graph/parse.h"
+#include "graph/compile_graph.h"
 #include "interp/interpreter.h"
 #include "nodes/semantics/noise.h"
 #include "support/graph_text.h"
@@ -20,13 +18,10 @@ struct Evaluation {
 
 // Evaluates a texture graph's color at `count` points along a line.
 Evaluation evaluate(const std::string& text, std::size_t count) {
-  Result<Graph> parsed = parse_graph(text, "g.json");
-  EXPECT_TRUE(parsed.ok()) << parsed.error().to_string();
-  auto graph = std::make_shared<const Graph>(*parsed);
-  Result<CheckedGraph> checked = check_graph(graph);
-  EXPECT_TRUE(checked.ok()) << checked.error().to_string();
-  ShadeIR ir = *lower(*checked);
-  const std::vector<float> params = param_block(*graph, ir);
+  Result<LoadedGraph> loaded = compile_graph_text(text, "g.json");
+  EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+  ShadeIR ir = loaded->ir;
+  const std::vector<float> params = loaded->params;
   Evaluation result;
   for (std::size_t i = 0; i < count; ++i) {
     result.px.push_back(-3.0f + 0.0137f * static_cast<float>(i));

@@ -1,20 +1,16 @@
 // The if node's branches land in regions that run only where they are taken.
 #include <gtest/gtest.h>
 
-#include "graph/check.h"
-#include "graph/lower.h"
-#include "graph/parse.h"
+#include "graph/compile_graph.h"
 #include "support/graph_text.h"
 
 namespace shadetree {
 namespace {
 
 ShadeIR lower_text(const std::string& text) {
-  Result<Graph> parsed = parse_graph(text, "g.json");
-  EXPECT_TRUE(parsed.ok()) << parsed.error().to_string();
-  Result<CheckedGraph> checked = check_graph(std::make_shared<const Graph>(*parsed));
-  EXPECT_TRUE(checked.ok()) << checked.error().to_string();
-  return *lower(*checked);
+  Result<LoadedGraph> loaded = compile_graph_text(text, "g.json");
+  EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+  return loaded->ir;
 }
 
 // The region an instruction of a given source node sits in: 0 outside,

@@ -1,0 +1,18 @@
+#include "graph/optimize.h"
+
+#include "graph/passes/eliminate_common_subexpressions.h"
+#include "graph/passes/eliminate_dead_code.h"
+#include "graph/passes/fold_constants.h"
+#include "graph/passes/place_conditional_regions.h"
+
+namespace shadetree {
+
+void optimize(ShadeIR& ir, const ConstantEvaluator& evaluate_constants) {
+  eliminate_dead_code(ir);
+  if (evaluate_constants) fold_constants(ir, evaluate_constants);
+  eliminate_common_subexpressions(ir);
+  eliminate_dead_code(ir);
+  place_conditional_regions(ir);
+}
+
+}  // namespace shadetree

@@ -1,0 +1,10 @@
+#pragma once
+
+#include "graph/shade_ir.h"
+
+namespace shadetree {
+
+// Makes every use of a repeated computation read its first occurrence.
+void eliminate_common_subexpressions(ShadeIR& ir);
+
+}  // namespace shadetree
