@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   add_eval_command(app, run);
   add_nodes_command(app, run);
   add_schema_command(app, run);
+  add_emit_command(app, run);
+  add_bench_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -109,11 +109,16 @@ class Jit {
     if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
     if (width == 0) width = host_vector_width();
     const auto start = std::chrono::steady_clock::now();
-    const std::string name = kernel_name(canonical_key(ir, width));
+    std::string name = kernel_name(canonical_key(ir, width));
     std::lock_guard lock(mutex_);
     auto elapsed = [&] {
       return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
+    if (settings.cold) {
+      name += "_cold" + std::to_string(++cold_compiles_);
+      object_cache_->set_folder({});
+      return build_and_add(ir, width, name, elapsed);
+    }
     if (auto found = kernels_.find(name); found != kernels_.end()) {
       CompiledKernel kernel = found->second;
       kernel.cache = CacheHit::memory;
@@ -139,19 +144,9 @@ class Jit {
         }
       }
     }
-    auto context = std::make_unique<llvm::LLVMContext>();
-    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name);
-    if (!module) return module.error();
-    if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
-      return failure("JIT: " + error_text(std::move(error)));
-    auto address = jit_->lookup(name);
-    if (!address) return failure("JIT: " + error_text(address.takeError()));
-    return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::none});
-  }
-
-  void forget() {
-    std::lock_guard lock(mutex_);
-    kernels_.clear();
+    Result<CompiledKernel> compiled = build_and_add(ir, width, name, elapsed);
+    if (!compiled) return compiled;
+    return remember(name, *compiled);
   }
 
   Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
@@ -228,6 +223,18 @@ class Jit {
     jit_->getMainJITDylib().addGenerator(std::move(*process));
   }
 
+  template <class Elapsed>
+  Result<CompiledKernel> build_and_add(const ShadeIR& ir, int width, const std::string& name, Elapsed elapsed) {
+    auto context = std::make_unique<llvm::LLVMContext>();
+    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name);
+    if (!module) return module.error();
+    if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
+      return failure("JIT: " + error_text(std::move(error)));
+    auto address = jit_->lookup(name);
+    if (!address) return failure("JIT: " + error_text(address.takeError()));
+    return CompiledKernel{address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::none};
+  }
+
   void optimize_module(llvm::Module& module) {
     llvm::LoopAnalysisManager loops;
     llvm::FunctionAnalysisManager functions;
@@ -253,6 +260,7 @@ class Jit {
   std::unique_ptr<llvm::orc::LLJIT> jit_;
   std::mutex mutex_;
   std::map<std::string, CompiledKernel> kernels_;
+  int cold_compiles_ = 0;
 };
 
 }  // namespace
@@ -271,8 +279,6 @@ int host_vector_width() {
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
   return Jit::instance().compile(ir, width, settings);
 }
-
-void forget_compiled_kernels() { Jit::instance().forget(); }
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing) {
   if (width == 0) width = host_vector_width();

@@ -30,15 +30,12 @@ struct CompiledKernel {
 struct JitSettings {
   bool disk_cache = true;
   std::string cache_folder;  // empty: $SHADETREE_CACHE_DIR, else $XDG_CACHE_HOME/shadetree, else ~/.cache/shadetree
+  bool cold = false;         // bypass both caches and compile anew (for measurements)
 };
 
 // Compiles (or finds) the kernel for `ir` at `width` (0: host width).
 // Thread-safe. LLVM failures come back as diagnostics with status 1.
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
-
-// Drops the in-memory cache (for cold-compile measurements); kernels
-// already handed out stay valid.
-void forget_compiled_kernels();
 
 // The kernel's LLVM IR before or after optimization, or its assembly.
 enum class Listing { llvm_ir, optimized_llvm_ir, assembly };

@@ -1,0 +1,159 @@
+// shadetree bench FILE...: per graph, nodes before and after optimization,
+// JIT compile time (cold and cached), and interpreter and JIT throughput at
+// one thread and at all threads, as medians of repeated runs after a
+// warm-up. Samples are the texture driver's (a WxH grid over the graph's
+// render domain), fed straight to the kernel so that every graph kind can
+// be measured.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "graph/compile_graph.h"
+#include "interp/interpreter.h"
+#include "jit/jit_kernel.h"
+#include "render/texture_driver.h"
+
+namespace shadetree {
+
+namespace {
+struct BenchArguments {
+  std::vector<std::string> files;
+  std::string size = "256x256";
+  int threads = 0;
+  int repetitions = 7;
+  bool json = false;
+};
+
+struct Samples {
+  std::size_t count = 0;
+  std::vector<float> planes[kernel_input_plane_count];
+  std::size_t output_planes = 0;
+};
+
+Samples make_samples(const TextureView& view, const ShadeIR& ir) {
+  Samples samples;
+  samples.count = static_cast<std::size_t>(view.width) * view.height;
+  for (auto& plane : samples.planes) plane.resize(samples.count);
+  for (int row = 0; row < view.height; ++row)
+    for (int column = 0; column < view.width; ++column) {
+      const std::size_t i = static_cast<std::size_t>(row) * view.width + column;
+      const TextureSample sample = texture_sample_at_pixel(view, column, row);
+      for (int c = 0; c < 3; ++c) samples.planes[c][i] = sample.P[c];
+      samples.planes[5][i] = 1.0f;
+      samples.planes[6][i] = sample.uv[0];
+      samples.planes[7][i] = sample.uv[1];
+      samples.planes[8][i] = sample.filter_width;
+      samples.planes[9][i] = 0.5f;
+    }
+  for (const IrOutput& output : ir.outputs) samples.output_planes += static_cast<std::size_t>(component_count(output.type));
+  return samples;
+}
+
+// Median samples per second of `repetitions` runs after one warm-up run.
+double measure(const Kernel& kernel, const std::vector<float>& params, const Samples& samples, int threads,
+               int repetitions) {
+  constexpr std::size_t chunk = 4096;
+  std::vector<float> output_storage(samples.output_planes * samples.count);
+  std::vector<float*> outputs;
+  for (std::size_t p = 0; p < samples.output_planes; ++p) outputs.push_back(output_storage.data() + p * samples.count);
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  auto run_once = [&] {
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t(0), (samples.count + chunk - 1) / chunk, [&](std::size_t c) {
+        const std::size_t start = c * chunk, count = std::min(chunk, samples.count - start);
+        KernelInputs inputs;
+        for (int k = 0; k < 3; ++k) {
+          inputs.P[k] = samples.planes[k].data() + start;
+          inputs.N[k] = samples.planes[3 + k].data() + start;
+        }
+        inputs.uv[0] = samples.planes[6].data() + start;
+        inputs.uv[1] = samples.planes[7].data() + start;
+        inputs.filter_width = samples.planes[8].data() + start;
+        inputs.density = samples.planes[9].data() + start;
+        std::vector<float*> shifted;
+        for (float* plane : outputs) shifted.push_back(plane + start);
+        kernel.run(params.data(), inputs, shifted.data(), count);
+      });
+    });
+  };
+  run_once();
+  std::vector<double> seconds;
+  for (int r = 0; r < repetitions; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    run_once();
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
+  return static_cast<double>(samples.count) / seconds[seconds.size() / 2];
+}
+
+ExitStatus bench(const BenchArguments& arguments) {
+  nlohmann::ordered_json results = nlohmann::json::array();
+  if (!arguments.json)
+    std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
+                "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
+  for (const std::string& file : arguments.files) {
+    Result<LoadedGraph> loaded = load_and_compile(file, {});
+    if (!loaded) return report(loaded.error());
+    auto view = texture_view(*loaded->graph, arguments.size, std::nullopt);
+    if (!view) return report(view.error());
+    const Samples samples = make_samples(*view, loaded->ir);
+
+    Result<CompiledKernel> cold = compile_kernel(loaded->ir, 0, JitSettings{false, {}, true});
+    if (!cold) return report(cold.error());
+    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 0, JitSettings{false, {}});
+    if (!jit) return report(jit.error());
+    Result<CompiledKernel> cached = compile_kernel(loaded->ir, 0, JitSettings{false, {}});
+    if (!cached) return report(cached.error());
+    auto interp = make_interpreted_kernel(loaded->ir);
+
+    const int all = arguments.threads;
+    const double interp_1t = measure(*interp, loaded->params, samples, 1, arguments.repetitions);
+    const double interp_mt = measure(*interp, loaded->params, samples, all, arguments.repetitions);
+    const double jit_1t = measure(**jit, loaded->params, samples, 1, arguments.repetitions);
+    const double jit_mt = measure(**jit, loaded->params, samples, all, arguments.repetitions);
+    const std::string name = loaded->graph->name;
+    if (arguments.json) {
+      results.push_back({{"graph", name},
+                         {"samples", samples.count},
+                         {"nodes_before", loaded->instructions_before_optimization},
+                         {"nodes_after", loaded->ir.code.size()},
+                         {"compile_ms_cold", cold->compile_milliseconds},
+                         {"compile_ms_cached", cached->compile_milliseconds},
+                         {"interp_sps_1t", interp_1t},
+                         {"interp_sps_mt", interp_mt},
+                         {"jit_sps_1t", jit_1t},
+                         {"jit_sps_mt", jit_mt}});
+    } else {
+      std::printf("%-16s %8zu %5d->%-5zu %9.2f %9.3f %10.2fM %10.2fM %10.2fM %10.2fM %8.1fx\n", name.c_str(),
+                  samples.count, loaded->instructions_before_optimization, loaded->ir.code.size(),
+                  cold->compile_milliseconds, cached->compile_milliseconds, interp_1t / 1e6, interp_mt / 1e6,
+                  jit_1t / 1e6, jit_mt / 1e6, jit_1t / interp_1t);
+    }
+  }
+  if (arguments.json) std::printf("%s\n", results.dump(2).c_str());
+  return ExitStatus::ok;
+}
+}  // namespace
+
+void add_bench_command(CLI::App& app, CommandRunner& run) {
+  auto* command = app.add_subcommand("bench", "measure compile time and interpreter / JIT throughput");
+  auto arguments = std::make_shared<BenchArguments>();
+  command->add_option("files", arguments->files, "graph files")->required();
+  command->add_option("--size", arguments->size, "sample grid WIDTHxHEIGHT (default 256x256)");
+  command->add_option("--threads", arguments->threads, "threads of the multi-threaded runs (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--repetitions", arguments->repetitions, "timed runs per measurement (default 7)")
+      ->check(CLI::Range(1, 1000));
+  command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
+  command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });
+}
+
+}  // namespace shadetree

@@ -1,0 +1,58 @@
+// shadetree emit FILE --graph | --llvm | --asm: what a graph compiles to,
+// after optimization, so that a reader can check the passes and see the
+// vector instructions.
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "graph/compile_graph.h"
+#include "jit/jit_compiler.h"
+
+namespace shadetree {
+
+namespace {
+struct EmitArguments {
+  std::string file;
+  bool graph = false, llvm = false, assembly = false;
+  int width = 0;
+  std::vector<std::string> assignments;
+};
+
+ExitStatus emit(const EmitArguments& arguments) {
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
+  if (!loaded) return report(loaded.error());
+  if (arguments.graph) {
+    std::printf("; %s: %d instructions before optimization, %zu after\n", arguments.file.c_str(),
+                loaded->instructions_before_optimization, loaded->ir.code.size());
+    std::printf("%s", format_shade_ir(loaded->ir).c_str());
+    return ExitStatus::ok;
+  }
+  Result<std::string> listing =
+      kernel_listing(loaded->ir, arguments.width, arguments.llvm ? Listing::optimized_llvm_ir : Listing::assembly);
+  if (!listing) return report(listing.error());
+  std::printf("%s", listing->c_str());
+  return ExitStatus::ok;
+}
+}  // namespace
+
+void add_emit_command(CLI::App& app, CommandRunner& run) {
+  auto* command = app.add_subcommand("emit", "print the optimized graph, LLVM IR or machine code of a graph");
+  auto arguments = std::make_shared<EmitArguments>();
+  command->add_option("file", arguments->file, "graph file")->required();
+  auto* graph = command->add_flag("--graph", arguments->graph, "the optimized ShadeIR");
+  auto* llvm = command->add_flag("--llvm", arguments->llvm, "the optimized LLVM IR of the kernel");
+  auto* assembly = command->add_flag("--asm", arguments->assembly, "the kernel's machine code");
+  graph->excludes(llvm)->excludes(assembly);
+  llvm->excludes(assembly);
+  command->add_option("--width", arguments->width, "vector width: 4, 8 or 16 (default: the host's widest)")
+      ->check(CLI::IsMember({4, 8, 16}));
+  command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
+  command->callback([&run, arguments] {
+    if (!arguments->graph && !arguments->llvm && !arguments->assembly)
+      throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm");
+    run = [arguments] { return emit(*arguments); };
+  });
+}
+
+}  // namespace shadetree
