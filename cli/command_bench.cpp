@@ -29,6 +29,7 @@ struct BenchArguments {
   int threads = 0;
   int repetitions = 7;
   bool json = false;
+  std::string gathers;
 };
 
 struct Samples {
@@ -106,11 +107,16 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (!view) return report(view.error());
     const Samples samples = make_samples(*view, loaded->ir);
 
-    Result<CompiledKernel> cold = compile_kernel(loaded->ir, 0, JitSettings{false, {}, true});
+    JitSettings settings{false, {}, false, std::nullopt};
+    if (arguments.gathers == "hardware") settings.gathers = GatherStrategy::hardware;
+    if (arguments.gathers == "per-lane") settings.gathers = GatherStrategy::per_lane;
+    JitSettings cold_settings = settings;
+    cold_settings.cold = true;
+    Result<CompiledKernel> cold = compile_kernel(loaded->ir, 0, cold_settings);
     if (!cold) return report(cold.error());
-    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 0, JitSettings{false, {}});
+    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 0, settings);
     if (!jit) return report(jit.error());
-    Result<CompiledKernel> cached = compile_kernel(loaded->ir, 0, JitSettings{false, {}});
+    Result<CompiledKernel> cached = compile_kernel(loaded->ir, 0, settings);
     if (!cached) return report(cached.error());
     auto interp = make_interpreted_kernel(loaded->ir);
 
@@ -153,6 +159,8 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--repetitions", arguments->repetitions, "timed runs per measurement (default 7)")
       ->check(CLI::Range(1, 1000));
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
+  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware or per-lane (default: the host's)")
+      ->check(CLI::IsMember({"hardware", "per-lane"}));
   command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });
 }
 

@@ -368,14 +368,48 @@ class KernelEmitter {
   std::map<std::uint32_t, llvm::Value*> tables_;
 };
 
+// Defines the library's st_gather_<type>_w<W>(out, table, index) lookups.
+void define_gathers(llvm::Module& module, GatherStrategy strategy) {
+  llvm::LLVMContext& context = module.getContext();
+  for (int width : {4, 8, 16}) {
+    for (bool is_float : {true, false}) {
+      const std::string name = std::string("st_gather_") + (is_float ? "f32" : "i32") + "_w" + std::to_string(width);
+      llvm::Function* function = module.getFunction(name);
+      if (!function || !function->isDeclaration()) continue;
+      llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "entry", function));
+      llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+      auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
+      auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
+      auto args = function->arg_begin();
+      llvm::Value* out = &*args++;
+      llvm::Value* table = &*args++;
+      llvm::Value* index = builder.CreateLoad(index_type, &*args);
+      llvm::Value* result;
+      if (strategy == GatherStrategy::hardware) {
+        llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
+        result = builder.CreateMaskedGather(vector, addresses, llvm::Align(4));
+      } else {
+        result = llvm::PoisonValue::get(vector);
+        for (int lane = 0; lane < width; ++lane) {
+          llvm::Value* address = builder.CreateInBoundsGEP(element, table, builder.CreateExtractElement(index, lane));
+          result = builder.CreateInsertElement(result, builder.CreateLoad(element, address), lane);
+        }
+      }
+      builder.CreateStore(result, out);
+      builder.CreateRetVoid();
+    }
+  }
+}
+
 }  // namespace
 
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                         const std::string& function_name) {
+                                                         const std::string& function_name, GatherStrategy gathers) {
   if (width != 4 && width != 8 && width != 16) return invalid_input("vector width must be 4, 8 or 16");
   std::unique_ptr<llvm::Module> module = load_op_library(context);
   if (!module) return failure("the embedded op library bitcode is unreadable");
   module->setModuleIdentifier(function_name);
+  define_gathers(*module, gathers);
   // The library is only there to be inlined into this kernel.
   for (llvm::Function& function : *module) {
     if (function.isDeclaration()) continue;

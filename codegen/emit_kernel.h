@@ -28,9 +28,14 @@ inline constexpr int kernel_input_plane_count = 10;
 using KernelFunction = void (*)(const float* params, const float* const* input_planes, float time, float frame,
                                 float* const* output_planes, std::int64_t count);
 
+// How the op library's table lookups become instructions: one hardware
+// gather per lookup (vgatherdps / vpgatherdd), or one scalar load per lane.
+enum class GatherStrategy { hardware, per_lane };
+
 // The module holds the kernel (named `function_name`) and the op library it
 // calls, marked for inlining.
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                         const std::string& function_name);
+                                                         const std::string& function_name,
+                                                         GatherStrategy gathers = GatherStrategy::hardware);
 
 }  // namespace shadetree

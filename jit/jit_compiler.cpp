@@ -44,9 +44,9 @@ std::string host_features() {
 }
 
 // A canonical text of everything the machine code depends on.
-std::string canonical_key(const ShadeIR& ir, int width) {
+std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
-  text << cache_format << "\n" << width << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  text << cache_format << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
   for (const IrInstr& instr : ir.code) {
     text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
          << ' ' << instr.uniform << ' ' << instr.data_offset << ' ' << instr.data_count << ' ' << instr.immediate[0]
@@ -109,7 +109,8 @@ class Jit {
     if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
     if (width == 0) width = host_vector_width();
     const auto start = std::chrono::steady_clock::now();
-    std::string name = kernel_name(canonical_key(ir, width));
+    const GatherStrategy gathers = settings.gathers.value_or(host_gather_strategy());
+    std::string name = kernel_name(canonical_key(ir, width, gathers));
     std::lock_guard lock(mutex_);
     auto elapsed = [&] {
       return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -117,7 +118,7 @@ class Jit {
     if (settings.cold) {
       name += "_cold" + std::to_string(++cold_compiles_);
       object_cache_->set_folder({});
-      return build_and_add(ir, width, name, elapsed);
+      return build_and_add(ir, width, name, gathers, elapsed);
     }
     if (auto found = kernels_.find(name); found != kernels_.end()) {
       CompiledKernel kernel = found->second;
@@ -144,15 +145,16 @@ class Jit {
         }
       }
     }
-    Result<CompiledKernel> compiled = build_and_add(ir, width, name, elapsed);
+    Result<CompiledKernel> compiled = build_and_add(ir, width, name, gathers, elapsed);
     if (!compiled) return compiled;
     return remember(name, *compiled);
   }
 
   Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                               const std::string& name, bool optimize = true) {
+                                                               const std::string& name, GatherStrategy gathers,
+                                                               bool optimize = true) {
     if (!target_machine_) return failure("cannot start the LLVM JIT: " + startup_error_);
-    Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name);
+    Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
     if (!module) return module.error();
     llvm::Module& m = **module;
     m.setDataLayout(target_machine_->createDataLayout());
@@ -224,9 +226,10 @@ class Jit {
   }
 
   template <class Elapsed>
-  Result<CompiledKernel> build_and_add(const ShadeIR& ir, int width, const std::string& name, Elapsed elapsed) {
+  Result<CompiledKernel> build_and_add(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
+                                       Elapsed elapsed) {
     auto context = std::make_unique<llvm::LLVMContext>();
-    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name);
+    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name, gathers);
     if (!module) return module.error();
     if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
       return failure("JIT: " + error_text(std::move(error)));
@@ -280,11 +283,15 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
   return Jit::instance().compile(ir, width, settings);
 }
 
-Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing) {
+// Measured with `shadetree bench --gathers`: per-lane loads beat vgatherdps on
+// the x86 parts we have (see docs/architecture.md).
+GatherStrategy host_gather_strategy() { return GatherStrategy::per_lane; }
+
+Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();
   llvm::LLVMContext context;
   Result<std::unique_ptr<llvm::Module>> module = Jit::instance().build_optimized_module(
-      ir, width, context, "shade_kernel", listing != Listing::llvm_ir);
+      ir, width, context, "shade_kernel", settings.gathers.value_or(host_gather_strategy()), listing != Listing::llvm_ir);
   if (!module) return module.error();
   if (listing == Listing::assembly) return Jit::instance().assembly(**module);
   std::string text;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "codegen/emit_kernel.h"
@@ -31,7 +32,11 @@ struct JitSettings {
   bool disk_cache = true;
   std::string cache_folder;  // empty: $SHADETREE_CACHE_DIR, else $XDG_CACHE_HOME/shadetree, else ~/.cache/shadetree
   bool cold = false;         // bypass both caches and compile anew (for measurements)
+  std::optional<GatherStrategy> gathers;  // empty: the host's best (docs/architecture.md)
 };
+
+// The table lookup strategy used when JitSettings::gathers is empty.
+GatherStrategy host_gather_strategy();
 
 // Compiles (or finds) the kernel for `ir` at `width` (0: host width).
 // Thread-safe. LLVM failures come back as diagnostics with status 1.
@@ -39,6 +44,6 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
 
 // The kernel's LLVM IR before or after optimization, or its assembly.
 enum class Listing { llvm_ir, optimized_llvm_ir, assembly };
-Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing);
+Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings = {});
 
 }  // namespace shadetree

@@ -14,6 +14,18 @@ using floatv = float __attribute__((ext_vector_type(W)));
 template <int W>
 using intv = std::int32_t __attribute__((ext_vector_type(W)));
 
+// Table lookups are declared here and defined by the code generator
+// (codegen/emit_kernel.cpp), which picks the instruction sequence per
+// target: a hardware gather or one load per lane.
+#define SHADETREE_VECTOR_GATHERS(W)                                                                          \
+  extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
+  extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);
+
+SHADETREE_VECTOR_GATHERS(4)
+SHADETREE_VECTOR_GATHERS(8)
+SHADETREE_VECTOR_GATHERS(16)
+#undef SHADETREE_VECTOR_GATHERS
+
 #define SHADETREE_VECTOR_LANES(W)                                                                             \
   inline floatv<W> select(intv<W> mask, floatv<W> a, floatv<W> b) { return mask ? a : b; }                  \
   inline intv<W> select(intv<W> mask, intv<W> a, intv<W> b) { return mask ? a : b; }                        \
@@ -37,12 +49,12 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   inline floatv<W> to_float(intv<W> i) { return __builtin_convertvector(i, floatv<W>); }                    \
   inline floatv<W> gather(const float* table, intv<W> index) {                                              \
     floatv<W> result;                                                                                        \
-    for (int lane = 0; lane < W; ++lane) result[lane] = table[index[lane]];                                 \
+    st_gather_f32_w##W(&result, table, &index);                                                              \
     return result;                                                                                           \
   }                                                                                                          \
   inline intv<W> gather(const std::int32_t* table, intv<W> index) {                                         \
     intv<W> result;                                                                                          \
-    for (int lane = 0; lane < W; ++lane) result[lane] = table[index[lane]];                                 \
+    st_gather_i32_w##W(&result, table, &index);                                                              \
     return result;                                                                                           \
   }
 

@@ -97,7 +97,7 @@ bool agree(float a, float b) {
 std::string compare_backends(const std::string& name, const ShadeIR& ir, const std::vector<float>& params,
                              int width) {
   auto reference = run(*make_interpreted_kernel(ir), params);
-  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}});
+  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}, false, std::nullopt});
   if (!jit) return name + ": JIT failed: " + jit.error().to_string();
   auto compiled = run(**jit, params);
   for (std::size_t plane = 0; plane < reference.size(); ++plane)
