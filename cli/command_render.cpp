@@ -38,6 +38,7 @@ ExitStatus render(const RenderArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
   Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, loaded->ir, arguments.width);
   if (!kernel) return report(kernel.error());
+  const auto render_start = std::chrono::steady_clock::now();
   Result<Image> image = [&] {
     ProgressReporter progress("rendering " + arguments.file);
     TextureRenderOptions options;
@@ -46,13 +47,15 @@ ExitStatus render(const RenderArguments& arguments) {
     return render_texture(**kernel, loaded->params, view, options);
   }();
   if (!image) return report(image.error());
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto end = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(end - render_start).count();
+  const double setup_milliseconds = std::chrono::duration<double, std::milli>(render_start - start).count();
   Status written = write_image(*image, arguments.output);
   if (!written) return report(written.error());
   const double samples = static_cast<double>(view.width) * view.height;
-  std::fprintf(stderr, "%s: %dx%d, %.0f samples in %.3f s (%.2f M samples/s, %s) -> %s\n", arguments.file.c_str(),
-               view.width, view.height, samples, seconds, samples / seconds / 1e6, arguments.backend.c_str(),
-               arguments.output.c_str());
+  std::fprintf(stderr, "%s: %dx%d, %.0f samples in %.3f s (%.2f M samples/s, %s, kernel ready in %.1f ms) -> %s\n",
+               arguments.file.c_str(), view.width, view.height, samples, seconds, samples / seconds / 1e6,
+               arguments.backend.c_str(), setup_milliseconds, arguments.output.c_str());
   return ExitStatus::ok;
 }
 }  // namespace

@@ -1,0 +1,78 @@
+// The JIT emits vector code of the chosen width and caches kernels: a second
+// compile of the same graph is a lookup, params are bound at call time, and
+// compiled objects land in the disk cache.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "graph/compile_graph.h"
+#include "jit/jit_compiler.h"
+#include "jit/jit_kernel.h"
+#include "support/graph_text.h"
+
+namespace shadetree {
+namespace {
+
+const std::string noise_graph = testing::graph_text(
+    R"({"id": "p", "op": "P"}, {"id": "q", "op": "mul", "in": {"a": "p", "b": "$scale"}},
+       {"id": "n", "op": "turbulence", "in": {"p": "q", "octaves": 4}},
+       {"id": "c", "op": "color", "in": {"r": "n"}})",
+    R"("color": "c")", R"("params": {"scale": {"type": "float", "default": 3}},)");
+
+JitSettings memory_only() { return JitSettings{false, {}, false, std::nullopt}; }
+
+TEST(JitCompiler, NoiseKernelsUseVectorsOfTheChosenWidth) {
+  Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (int width : {4, 8, 16}) {
+    Result<std::string> ir = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
+    ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+    const std::string vector = "<" + std::to_string(width) + " x float>";
+    EXPECT_NE(ir->find("fmul " + vector), std::string::npos) << "width " << width;
+    EXPECT_NE(ir->find("@llvm.floor.v" + std::to_string(width) + "f32"), std::string::npos) << "width " << width;
+    EXPECT_EQ(ir->find("@st_"), std::string::npos) << "the op library should be inlined";
+  }
+  Result<std::string> assembly = kernel_listing(loaded->ir, 8, Listing::assembly);
+  ASSERT_TRUE(assembly.ok());
+  EXPECT_NE(assembly->find("ymm"), std::string::npos);
+}
+
+TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
+  Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
+  ASSERT_TRUE(loaded.ok());
+  Result<CompiledKernel> first = compile_kernel(loaded->ir, 8, memory_only());
+  ASSERT_TRUE(first.ok()) << first.error().to_string();
+  Result<LoadedGraph> retuned = compile_graph_text(noise_graph, "noise.json", {"scale=7.5"});
+  ASSERT_TRUE(retuned.ok());
+  Result<CompiledKernel> second = compile_kernel(retuned->ir, 8, memory_only());
+  ASSERT_TRUE(second.ok());
+  EXPECT_EQ(second->cache, CacheHit::memory);
+  EXPECT_EQ(second->function, first->function);
+
+  // The same machine code gives different values for different params.
+  float px[8] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f}, zero[8] = {};
+  float red[2][8], green[8], blue[8];
+  const float* inputs[kernel_input_plane_count] = {px, px, zero};
+  for (int run = 0; run < 2; ++run) {
+    float* outputs[3] = {red[run], green, blue};
+    const std::vector<float>& params = run == 0 ? loaded->params : retuned->params;
+    first->function(params.data(), inputs, 0.0f, 0.0f, outputs, 8);
+  }
+  EXPECT_NE(std::vector<float>(red[0], red[0] + 8), std::vector<float>(red[1], red[1] + 8));
+}
+
+TEST(JitCompiler, CompiledObjectsGoToTheDiskCache) {
+  const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-disk-cache-test";
+  std::filesystem::remove_all(folder);
+  Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
+  ASSERT_TRUE(loaded.ok());
+  Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 4, JitSettings{true, folder.string(), false, std::nullopt});
+  ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+  std::size_t objects = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) objects += entry.path().extension() == ".o";
+  EXPECT_EQ(objects, 1u);
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace shadetree
