@@ -40,5 +40,3 @@ BENCHMARK_CAPTURE(render_gallery_graph, julia, "julia")->Arg(1)->Arg(0)->Unit(be
 
 }  // namespace
 }  // namespace shadetree
-
-BENCHMARK_MAIN();

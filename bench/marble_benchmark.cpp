@@ -1,0 +1,86 @@
+// graphs/marble.json three ways, one thread each, on the same 256x256
+// samples: the interpreter, the JIT, and the hand-written scalar C++
+// yardstick (-O3 -march=native). Run
+//   build/shadetree_bench --benchmark_filter=marble_ --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// and compare items_per_second (samples per second) of the medians.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "bench/marble_yardstick.h"
+#include "graph/compile_graph.h"
+#include "interp/interpreter.h"
+#include "jit/jit_kernel.h"
+#include "render/texture_driver.h"
+
+namespace shadetree {
+namespace {
+
+constexpr int side = 256;
+
+struct MarbleSamples {
+  std::vector<float> planes[kernel_input_plane_count];
+  std::vector<float> rgb[3];
+  LoadedGraph graph;
+
+  MarbleSamples() {
+    graph = *load_and_compile(SHADETREE_SOURCE_DIR "/graphs/marble.json", {});
+    TextureView view = TextureView::from_settings(graph.graph->render);
+    view.width = view.height = side;
+    for (auto& plane : planes) plane.resize(side * side);
+    for (auto& plane : rgb) plane.resize(side * side);
+    for (int row = 0; row < side; ++row)
+      for (int column = 0; column < side; ++column) {
+        const TextureSample sample = texture_sample_at_pixel(view, column, row);
+        const std::size_t i = static_cast<std::size_t>(row) * side + column;
+        for (int c = 0; c < 3; ++c) planes[c][i] = sample.P[c];
+        planes[8][i] = sample.filter_width;
+      }
+  }
+
+  void run(const Kernel& kernel) {
+    KernelInputs inputs;
+    for (int c = 0; c < 3; ++c) inputs.P[c] = planes[c].data();
+    inputs.filter_width = planes[8].data();
+    float* outputs[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
+    kernel.run(graph.params.data(), inputs, outputs, side * side);
+  }
+};
+
+MarbleSamples& samples() {
+  static MarbleSamples instance;
+  return instance;
+}
+
+void marble_interpreter(benchmark::State& state) {
+  auto kernel = make_interpreted_kernel(samples().graph.ir);
+  for (auto _ : state) samples().run(*kernel);
+  state.SetItemsProcessed(state.iterations() * side * side);
+}
+
+void marble_jit(benchmark::State& state) {
+  auto kernel = make_jit_kernel(samples().graph.ir, static_cast<int>(state.range(0)));
+  if (!kernel) {
+    state.SkipWithError(kernel.error().to_string().c_str());
+    return;
+  }
+  for (auto _ : state) samples().run(**kernel);
+  state.SetItemsProcessed(state.iterations() * side * side);
+}
+
+void marble_yardstick(benchmark::State& state) {
+  MarbleSamples& s = samples();
+  for (auto _ : state)
+    yardstick::marble(s.planes[0].data(), s.planes[1].data(), s.planes[2].data(), s.planes[8].data(),
+                      s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(), side * side);
+  state.SetItemsProcessed(state.iterations() * side * side);
+}
+
+BENCHMARK(marble_interpreter)->Unit(benchmark::kMillisecond);
+BENCHMARK(marble_jit)->Arg(0)->Arg(8)->Arg(4)->Unit(benchmark::kMillisecond);  // 0: host width
+BENCHMARK(marble_yardstick)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace shadetree
+
+BENCHMARK_MAIN();
