@@ -14,6 +14,8 @@
 
 #include <llvm/IR/Constants.h>
 #include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/Intrinsics.h>
+#include <llvm/IR/IntrinsicsX86.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/IR/Verifier.h>
@@ -189,7 +191,8 @@ class KernelEmitter {
     llvm::Constant* fields[] = {
         llvm::ConstantDataArray::get(context_, llvm::ArrayRef<std::int32_t>(tables.permutation.data(),
                                                                              tables.permutation.size())),
-        floats(tables.gradient_x), floats(tables.gradient_y), floats(tables.gradient_z)};
+        floats(tables.gradient_x),        floats(tables.gradient_y),        floats(tables.gradient_z),
+        floats(tables.hashed_gradient_x), floats(tables.hashed_gradient_y), floats(tables.hashed_gradient_z)};
     llvm::Constant* initializer = llvm::ConstantStruct::getAnon(context_, fields);
     auto* global = new llvm::GlobalVariable(module_, initializer->getType(), true, llvm::GlobalValue::InternalLinkage,
                                             initializer, "noise_tables_" + std::to_string(seed));
@@ -368,35 +371,76 @@ class KernelEmitter {
   std::map<std::uint32_t, llvm::Value*> tables_;
 };
 
-// Defines the library's st_gather_<type>_w<W>(out, table, index) lookups.
+// One lookup per lane: extract the index, load, insert.
+llvm::Value* per_lane_lookup(llvm::IRBuilder<>& builder, llvm::Type* element, llvm::Value* table, llvm::Value* index,
+                             int width) {
+  llvm::Value* result = llvm::PoisonValue::get(llvm::FixedVectorType::get(element, static_cast<unsigned>(width)));
+  for (int lane = 0; lane < width; ++lane) {
+    llvm::Value* address = builder.CreateInBoundsGEP(element, table, builder.CreateExtractElement(index, lane));
+    result = builder.CreateInsertElement(result, builder.CreateLoad(element, address), lane);
+  }
+  return result;
+}
+
+// A 256-entry table held in sixteen 16-lane registers: vpermt2ps/vpermt2d
+// pick within each 32-entry pair by the index's low 5 bits, then three
+// rounds of selects on bits 5, 6 and 7 pick the pair. AVX-512 only.
+llvm::Value* in_register_lookup(llvm::IRBuilder<>& builder, llvm::Module& module, bool is_float, llvm::Value* table,
+                                llvm::Value* index) {
+  llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+  auto* vector = llvm::FixedVectorType::get(element, 16);
+  llvm::Function* permute = llvm::Intrinsic::getDeclaration(
+      &module, is_float ? llvm::Intrinsic::x86_avx512_vpermi2var_ps_512 : llvm::Intrinsic::x86_avx512_vpermi2var_d_512);
+  std::vector<llvm::Value*> candidates;
+  for (int pair = 0; pair < 8; ++pair) {
+    llvm::Value* low = builder.CreateAlignedLoad(vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair),
+                                                 llvm::Align(4));
+    llvm::Value* high = builder.CreateAlignedLoad(
+        vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair + 16), llvm::Align(4));
+    candidates.push_back(builder.CreateCall(permute, {low, index, high}));
+  }
+  for (int bit = 5; bit < 8; ++bit) {
+    llvm::Value* take_high = builder.CreateICmpNE(
+        builder.CreateAnd(index, builder.CreateVectorSplat(16, builder.getInt32(1u << bit))),
+        llvm::ConstantAggregateZero::get(index->getType()));
+    std::vector<llvm::Value*> chosen;
+    for (std::size_t c = 0; c < candidates.size(); c += 2)
+      chosen.push_back(builder.CreateSelect(take_high, candidates[c + 1], candidates[c]));
+    candidates = std::move(chosen);
+  }
+  return candidates[0];
+}
+
+// Defines the library's table lookups st_gather[256]_<type>_w<W>(out, table,
+// index) with the chosen strategy.
 void define_gathers(llvm::Module& module, GatherStrategy strategy) {
   llvm::LLVMContext& context = module.getContext();
   for (int width : {4, 8, 16}) {
-    for (bool is_float : {true, false}) {
-      const std::string name = std::string("st_gather_") + (is_float ? "f32" : "i32") + "_w" + std::to_string(width);
-      llvm::Function* function = module.getFunction(name);
-      if (!function || !function->isDeclaration()) continue;
-      llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "entry", function));
-      llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
-      auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
-      auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
-      auto args = function->arg_begin();
-      llvm::Value* out = &*args++;
-      llvm::Value* table = &*args++;
-      llvm::Value* index = builder.CreateLoad(index_type, &*args);
-      llvm::Value* result;
-      if (strategy == GatherStrategy::hardware) {
-        llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
-        result = builder.CreateMaskedGather(vector, addresses, llvm::Align(4));
-      } else {
-        result = llvm::PoisonValue::get(vector);
-        for (int lane = 0; lane < width; ++lane) {
-          llvm::Value* address = builder.CreateInBoundsGEP(element, table, builder.CreateExtractElement(index, lane));
-          result = builder.CreateInsertElement(result, builder.CreateLoad(element, address), lane);
+    for (bool table256 : {false, true}) {
+      for (bool is_float : {true, false}) {
+        const std::string name = std::string(table256 ? "st_gather256_" : "st_gather_") + (is_float ? "f32" : "i32") +
+                                 "_w" + std::to_string(width);
+        llvm::Function* function = module.getFunction(name);
+        if (!function || !function->isDeclaration()) continue;
+        llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "entry", function));
+        llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+        auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
+        auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
+        auto args = function->arg_begin();
+        llvm::Value* out = &*args++;
+        llvm::Value* table = &*args++;
+        llvm::Value* index = builder.CreateLoad(index_type, &*args);
+        llvm::Value* result;
+        if (strategy == GatherStrategy::hardware) {
+          result = builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
+        } else if (strategy == GatherStrategy::in_register && table256 && width == 16) {
+          result = in_register_lookup(builder, module, is_float, table, index);
+        } else {
+          result = per_lane_lookup(builder, element, table, index, width);
         }
+        builder.CreateStore(result, out);
+        builder.CreateRetVoid();
       }
-      builder.CreateStore(result, out);
-      builder.CreateRetVoid();
     }
   }
 }

@@ -29,8 +29,10 @@ using KernelFunction = void (*)(const float* params, const float* const* input_p
                                 float* const* output_planes, std::int64_t count);
 
 // How the op library's table lookups become instructions: one hardware
-// gather per lookup (vgatherdps / vpgatherdd), or one scalar load per lane.
-enum class GatherStrategy { hardware, per_lane };
+// gather per lookup (vgatherdps / vpgatherdd); one scalar load per lane; or,
+// for the 256-entry noise tables at width 16 (AVX-512), permutes over the
+// table held in registers, other lookups per lane.
+enum class GatherStrategy { hardware, per_lane, in_register };
 
 // The module holds the kernel (named `function_name`) and the op library it
 // calls, marked for inlining.

@@ -283,9 +283,12 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
   return Jit::instance().compile(ir, width, settings);
 }
 
-// Measured with `shadetree bench --gathers`: per-lane loads beat vgatherdps on
-// the x86 parts we have (see docs/architecture.md).
-GatherStrategy host_gather_strategy() { return GatherStrategy::per_lane; }
+// Measured with `shadetree bench --gathers` (figures in docs/architecture.md):
+// per-lane loads beat vgatherdps on the x86 parts we have, and permutes over
+// registers beat both where AVX-512 allows them.
+GatherStrategy host_gather_strategy() {
+  return host_vector_width() == 16 ? GatherStrategy::in_register : GatherStrategy::per_lane;
+}
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();

@@ -39,6 +39,10 @@ inline float to_float(std::int32_t i) { return static_cast<float>(i); }
 
 inline float gather(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { return table[index]; }
+// Lookups in a table of exactly 256 entries with index in [0, 256): the
+// noise tables, which a vector backend may hold in registers.
+inline float gather256(const float* table, std::int32_t index) { return table[index]; }
+inline std::int32_t gather256(const std::int32_t* table, std::int32_t index) { return table[index]; }
 
 template <class F>
 using IntOf = decltype(to_int(F{}));

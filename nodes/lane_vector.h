@@ -19,7 +19,9 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // target: a hardware gather or one load per lane.
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
-  extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);
+  extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
+  extern "C" void st_gather256_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);          \
+  extern "C" void st_gather256_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
@@ -55,6 +57,16 @@ SHADETREE_VECTOR_GATHERS(16)
   inline intv<W> gather(const std::int32_t* table, intv<W> index) {                                         \
     intv<W> result;                                                                                          \
     st_gather_i32_w##W(&result, table, &index);                                                              \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline floatv<W> gather256(const float* table, intv<W> index) {                                           \
+    floatv<W> result;                                                                                        \
+    st_gather256_f32_w##W(&result, table, &index);                                                           \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline intv<W> gather256(const std::int32_t* table, intv<W> index) {                                      \
+    intv<W> result;                                                                                          \
+    st_gather256_i32_w##W(&result, table, &index);                                                           \
     return result;                                                                                           \
   }
 

@@ -52,6 +52,11 @@ NoiseTables make_noise_tables(std::uint32_t seed) {
     tables.gradient_y[i] = static_cast<float>(y / length);
     tables.gradient_z[i] = static_cast<float>(z / length);
   }
+  for (int i = 0; i < noise_table_size; ++i) {
+    tables.hashed_gradient_x[i] = tables.gradient_x[tables.permutation[i]];
+    tables.hashed_gradient_y[i] = tables.gradient_y[tables.permutation[i]];
+    tables.hashed_gradient_z[i] = tables.gradient_z[tables.permutation[i]];
+  }
   return tables;
 }
 

@@ -15,6 +15,11 @@ struct NoiseTables {
   std::array<float, noise_table_size> gradient_x;          // G: unit vectors, as SoA
   std::array<float, noise_table_size> gradient_y;
   std::array<float, noise_table_size> gradient_z;
+  // G[P[i]]: the last hash step and the gradient lookup composed into one
+  // table, so that a knot's gradient is one lookup instead of two.
+  std::array<float, noise_table_size> hashed_gradient_x;
+  std::array<float, noise_table_size> hashed_gradient_y;
+  std::array<float, noise_table_size> hashed_gradient_z;
 };
 
 // Tables for a seed, built as 1989 section 2.3 prescribes: P by a

@@ -95,9 +95,9 @@ bool agree(float a, float b) {
 
 // Compares the backends on `ir`; returns "" or the first disagreement.
 std::string compare_backends(const std::string& name, const ShadeIR& ir, const std::vector<float>& params,
-                             int width) {
+                             int width, std::optional<GatherStrategy> gathers = std::nullopt) {
   auto reference = run(*make_interpreted_kernel(ir), params);
-  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}, false, std::nullopt});
+  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}, false, gathers});
   if (!jit) return name + ": JIT failed: " + jit.error().to_string();
   auto compiled = run(**jit, params);
   for (std::size_t plane = 0; plane < reference.size(); ++plane)
@@ -132,6 +132,10 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   for (int width : {4, 8, 16})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
+  if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
+  for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register})
+    EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 16, gathers), "")
+        << "gather strategy " << static_cast<int>(gathers);
 }
 
 INSTANTIATE_TEST_SUITE_P(Gallery, GalleryDifferential, ::testing::ValuesIn(gallery_graphs()),

@@ -27,7 +27,7 @@ F noise_weight_derivative(F t) {
 // phi(i) = P[i mod n]; n = 256 so the mod is a mask (also for negative i).
 template <class I>
 I noise_phi(const NoiseTables& tables, I i) {
-  return gather(tables.permutation.data(), i & (noise_table_size - 1));
+  return gather256(tables.permutation.data(), i & (noise_table_size - 1));
 }
 
 // The lattice cell of a coordinate: floor(x) for the offsets, and floor(x)
@@ -50,7 +50,9 @@ LatticeCoordinate<F> lattice_coordinate(F x) {
 }
 
 // Visits the 2^3 knots around p (1989 section 2.3), giving each one's
-// gradient index phi(i + phi(j + phi(k))) and offset (u, v, w) = p - (i,j,k).
+// hashed-gradient slot (i + phi(j + phi(k))) mod n, so that its gradient
+// G[phi(i + phi(j + phi(k)))] is hashed_gradient[slot], and its offset
+// (u, v, w) = p - (i, j, k).
 template <class F, class Visit>
 void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) {
   auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
@@ -62,9 +64,9 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) 
       auto hash_jk = noise_phi(tables, ly.hash_index + dj + hash_k);
       F v = fy - float(dj);
       for (int di = 0; di < 2; ++di) {
-        auto gradient_index = noise_phi(tables, lx.hash_index + di + hash_jk);
+        auto slot = (lx.hash_index + di + hash_jk) & (noise_table_size - 1);
         F u = fx - float(di);
-        visit(gradient_index, u, v, w);
+        visit(slot, u, v, w);
       }
     }
   }
@@ -74,9 +76,10 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) 
 template <class F>
 F noise(const NoiseTables& tables, F x, F y, F z) {
   F sum = splat<F>(0.0f);
-  for_each_noise_knot(tables, x, y, z, [&](auto index, F u, F v, F w) {
-    F slope = gather(tables.gradient_x.data(), index) * u + gather(tables.gradient_y.data(), index) * v +
-              gather(tables.gradient_z.data(), index) * w;
+  for_each_noise_knot(tables, x, y, z, [&](auto slot, F u, F v, F w) {
+    F slope = gather256(tables.hashed_gradient_x.data(), slot) * u +
+              gather256(tables.hashed_gradient_y.data(), slot) * v +
+              gather256(tables.hashed_gradient_z.data(), slot) * w;
     sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
   });
   return sum;
@@ -87,10 +90,10 @@ F noise(const NoiseTables& tables, F x, F y, F z) {
 template <class F>
 Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
   Vec3<F> sum{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
-  for_each_noise_knot(tables, x, y, z, [&](auto index, F u, F v, F w) {
-    F gx = gather(tables.gradient_x.data(), index);
-    F gy = gather(tables.gradient_y.data(), index);
-    F gz = gather(tables.gradient_z.data(), index);
+  for_each_noise_knot(tables, x, y, z, [&](auto slot, F u, F v, F w) {
+    F gx = gather256(tables.hashed_gradient_x.data(), slot);
+    F gy = gather256(tables.hashed_gradient_y.data(), slot);
+    F gz = gather256(tables.hashed_gradient_z.data(), slot);
     F slope = gx * u + gy * v + gz * w;
     F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
     F weight = wu * wv * ww;
