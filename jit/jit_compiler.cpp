@@ -28,6 +28,14 @@
 namespace shadetree {
 namespace {
 
+// In-register lookups use AVX-512 instructions: never emit them on a host
+// without it, whatever the settings ask for.
+GatherStrategy effective_gathers(const JitSettings& settings) {
+  const GatherStrategy wanted = settings.gathers.value_or(host_gather_strategy());
+  if (wanted == GatherStrategy::in_register && host_vector_width() < 16) return GatherStrategy::per_lane;
+  return wanted;
+}
+
 // Bump when generated code changes meaning, so old disk caches are ignored.
 constexpr const char* cache_format = "shadetree-kernel-1";
 
@@ -109,7 +117,7 @@ class Jit {
     if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
     if (width == 0) width = host_vector_width();
     const auto start = std::chrono::steady_clock::now();
-    const GatherStrategy gathers = settings.gathers.value_or(host_gather_strategy());
+    const GatherStrategy gathers = effective_gathers(settings);
     std::string name = kernel_name(canonical_key(ir, width, gathers));
     std::lock_guard lock(mutex_);
     auto elapsed = [&] {
@@ -294,7 +302,7 @@ Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing
   if (width == 0) width = host_vector_width();
   llvm::LLVMContext context;
   Result<std::unique_ptr<llvm::Module>> module = Jit::instance().build_optimized_module(
-      ir, width, context, "shade_kernel", settings.gathers.value_or(host_gather_strategy()), listing != Listing::llvm_ir);
+      ir, width, context, "shade_kernel", effective_gathers(settings), listing != Listing::llvm_ir);
   if (!module) return module.error();
   if (listing == Listing::assembly) return Jit::instance().assembly(**module);
   std::string text;
