@@ -464,6 +464,16 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   }
   Result<llvm::Function*> kernel = KernelEmitter(ir, width, *module).emit(function_name);
   if (!kernel) return kernel.error();
+  // Drop the library functions this kernel never calls (other widths, other
+  // ops) before the optimizer spends time on them.
+  for (bool erased = true; erased;) {
+    erased = false;
+    for (llvm::Function& function : llvm::make_early_inc_range(*module)) {
+      if (&function == *kernel || !function.use_empty()) continue;
+      function.eraseFromParent();
+      erased = true;
+    }
+  }
   return module;
 }
 
