@@ -1,6 +1,7 @@
 #include "jit/jit_compiler.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include <llvm/IR/LegacyPassManager.h>
 #include <llvm/IR/Module.h>
 #include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/ErrorHandling.h>
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
 #include <llvm/Support/xxhash.h>
@@ -188,6 +190,13 @@ class Jit {
 
  private:
   Jit() {
+    // LLVM reports some failures (instruction selection, a broken object
+    // file) by aborting; make them the one-line error and status 1 that
+    // every other failure of shadetree gets.
+    llvm::install_fatal_error_handler([](void*, const char* reason, bool) {
+      std::fprintf(stderr, "error: LLVM: %s\n", reason);
+      std::_Exit(static_cast<int>(ExitStatus::failure));
+    });
     llvm::InitializeNativeTarget();
     llvm::InitializeNativeTargetAsmPrinter();
     llvm::InitializeNativeTargetAsmParser();

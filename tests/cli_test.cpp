@@ -161,6 +161,47 @@ TEST_F(Cli, EvalAgreesWithTheRenderedPixel) {
   }
 }
 
+TEST_F(Cli, BackendsRenderTheSameImage) {
+  const std::string jit = (directory_ / "jit.exr").string(), interp = (directory_ / "interp.exr").string();
+  ASSERT_EQ(shadetree("render " + gallery + "corona.json -o " + jit + " --size 37x29 --frame 5").status, 0);
+  ASSERT_EQ(shadetree("render " + gallery + "corona.json -o " + interp + " --size 37x29 --frame 5 --backend interp")
+                .status,
+            0);
+  Result<Image> a = read_image(jit), b = read_image(interp);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->pixels.size(), b->pixels.size());
+  for (std::size_t i = 0; i < a->pixels.size(); ++i) ASSERT_NEAR(a->pixels[i], b->pixels[i], 1e-5f) << i;
+}
+
+TEST_F(Cli, EmitShowsTheOptimizedGraphAndVectorCode) {
+  CommandResult run = shadetree("emit " + gallery + "marble.json --graph");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("turbulence"), std::string::npos);
+  EXPECT_NE(run.out.find("output color: color"), std::string::npos);
+  run = shadetree("emit " + gallery + "marble.json --llvm --width 8");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("<8 x float>"), std::string::npos);
+  run = shadetree("emit " + gallery + "marble.json --asm --width 8");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("ymm"), std::string::npos);
+  run = shadetree("emit " + gallery + "marble.json");
+  EXPECT_EQ(run.status, 2);
+}
+
+TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
+  const CommandResult run =
+      shadetree("bench " + gallery + "checker_aa.json " + gallery + "spotted.json --size 32x32 --repetitions 1 --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto results = nlohmann::json::parse(run.out);
+  ASSERT_EQ(results.size(), 2u);
+  for (const char* key : {"graph", "samples", "nodes_before", "nodes_after", "compile_ms_cold", "compile_ms_cached",
+                          "interp_sps_1t", "interp_sps_mt", "jit_sps_1t", "jit_sps_mt"})
+    EXPECT_TRUE(results[0].contains(key)) << key;
+  EXPECT_EQ(results[0]["graph"], "checker_aa");
+  EXPECT_EQ(results[1]["samples"], 1024);
+  EXPECT_GT(results[1]["jit_sps_1t"].get<double>(), 0.0);
+}
+
 TEST_F(Cli, NodesMarkdownIsTheCommittedReference) {
   const CommandResult run = shadetree("nodes --markdown");
   ASSERT_EQ(run.status, 0);
