@@ -136,11 +136,6 @@ class Jit {
       kernel.compile_milliseconds = elapsed();
       return kernel;
     }
-    if (auto address = jit_->lookup(name)) {  // compiled before, then forgotten
-      return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::memory});
-    } else {
-      llvm::consumeError(address.takeError());
-    }
     const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
     object_cache_->set_folder(folder);
     if (!folder.empty()) {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "graph/compile_graph.h"
+#include "support/gallery.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "nodes/registry.h"
@@ -117,13 +118,6 @@ Result<LoadedGraph> compile_text(const std::string& text) { return compile_graph
 
 // --- the gallery -------------------------------------------------------
 
-std::vector<std::string> gallery_graphs() {
-  std::vector<std::string> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(SHADETREE_SOURCE_DIR "/graphs"))
-    if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
 
 class GalleryDifferential : public ::testing::TestWithParam<std::string> {};
 
@@ -138,8 +132,8 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
         << "gather strategy " << static_cast<int>(gathers);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gallery, GalleryDifferential, ::testing::ValuesIn(gallery_graphs()),
-                         [](const auto& info) { return std::filesystem::path(info.param).stem().string(); });
+INSTANTIATE_TEST_SUITE_P(Gallery, GalleryDifferential, ::testing::ValuesIn(testing::gallery_graphs()),
+                         [](const auto& info) { return testing::gallery_graph_name(info.param); });
 
 // --- every node, over every type it accepts ------------------------------
 

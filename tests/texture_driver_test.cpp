@@ -7,19 +7,13 @@
 #include <filesystem>
 
 #include "graph/compile_graph.h"
+#include "support/gallery.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
 namespace {
 
-std::vector<std::string> gallery_graphs() {
-  std::vector<std::string> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(SHADETREE_SOURCE_DIR "/graphs"))
-    if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
-  std::sort(paths.begin(), paths.end());
-  return paths;
-}
 
 Image render(const LoadedGraph& loaded, int size, int threads, float frame = 0.0f) {
   TextureView view = TextureView::from_settings(loaded.graph->render);
@@ -52,8 +46,8 @@ TEST_P(GalleryGraph, IsBitIdenticalAcrossRunsAndThreadCounts) {
   EXPECT_EQ(many.pixels, again.pixels);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gallery, GalleryGraph, ::testing::ValuesIn(gallery_graphs()),
-                         [](const auto& info) { return std::filesystem::path(info.param).stem().string(); });
+INSTANTIATE_TEST_SUITE_P(Gallery, GalleryGraph, ::testing::ValuesIn(testing::gallery_graphs()),
+                         [](const auto& info) { return testing::gallery_graph_name(info.param); });
 
 TEST(TextureDriver, MapsPixelCentresThroughTheDomain) {
   TextureView view;

@@ -1,0 +1,22 @@
+// The gallery graphs, for tests that run over all of them.
+#pragma once
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shadetree::testing {
+
+inline std::vector<std::string> gallery_graphs() {
+  std::vector<std::string> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(SHADETREE_SOURCE_DIR "/graphs"))
+    if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+// Test names from paths: "graphs/marble.json" -> "marble".
+inline std::string gallery_graph_name(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+}  // namespace shadetree::testing
