@@ -431,10 +431,11 @@ void define_gathers(llvm::Module& module, GatherStrategy strategy) {
         llvm::Value* table = &*args++;
         llvm::Value* index = builder.CreateLoad(index_type, &*args);
         llvm::Value* result;
-        if (strategy == GatherStrategy::hardware) {
-          result = builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
-        } else if (strategy == GatherStrategy::in_register && table256 && width == 16) {
+        const bool in_register = strategy == GatherStrategy::in_register && width == 16;
+        if (in_register && table256) {
           result = in_register_lookup(builder, module, is_float, table, index);
+        } else if (strategy == GatherStrategy::hardware || in_register) {
+          result = builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
         } else {
           result = per_lane_lookup(builder, element, table, index, width);
         }

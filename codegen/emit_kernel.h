@@ -30,8 +30,8 @@ using KernelFunction = void (*)(const float* params, const float* const* input_p
 
 // How the op library's table lookups become instructions: one hardware
 // gather per lookup (vgatherdps / vpgatherdd); one scalar load per lane; or,
-// for the 256-entry noise tables at width 16 (AVX-512), permutes over the
-// table held in registers, other lookups per lane.
+// at width 16 (AVX-512), permutes over the 256-entry noise tables held in
+// registers and hardware gathers for the other tables (splines).
 enum class GatherStrategy { hardware, per_lane, in_register };
 
 // The module holds the kernel (named `function_name`) and the op library it
