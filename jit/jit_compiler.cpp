@@ -1,5 +1,7 @@
 #include "jit/jit_compiler.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +27,7 @@
 #include <llvm/Target/TargetMachine.h>
 #include <llvm/TargetParser/Host.h>
 
+#include "codegen/op_library.h"
 #include "nodes/noise_tables.h"
 
 namespace shadetree {
@@ -39,7 +42,8 @@ GatherStrategy effective_gathers(const JitSettings& settings) {
 }
 
 // Bump when generated code changes meaning, so old disk caches are ignored.
-constexpr const char* cache_format = "shadetree-kernel-1";
+// (A changed op library changes the key by itself: see op_library_hash.)
+constexpr const char* cache_format = "shadetree-kernel-2";
 
 std::string error_text(llvm::Error error) {
   std::string text;
@@ -56,7 +60,7 @@ std::string host_features() {
 // A canonical text of everything the machine code depends on.
 std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
-  text << cache_format << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  text << cache_format << " " << op_library_hash() << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
   for (const IrInstr& instr : ir.code) {
     text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
          << ' ' << instr.uniform << ' ' << instr.data_offset << ' ' << instr.data_count << ' ' << instr.immediate[0]
@@ -93,7 +97,8 @@ class DiskObjectCache final : public llvm::ObjectCache {
     std::error_code error;
     std::filesystem::create_directories(folder_, error);
     const auto target = folder_ / (module->getModuleIdentifier() + ".o");
-    const auto temporary = folder_ / (module->getModuleIdentifier() + ".o.partial");
+    const auto temporary =
+        folder_ / (module->getModuleIdentifier() + ".o.partial-" + std::to_string(static_cast<long>(::getpid())));
     {
       std::ofstream file(temporary, std::ios::binary);
       file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
