@@ -121,7 +121,7 @@ class Jit {
   }
 
   Result<CompiledKernel> compile(const ShadeIR& ir, int width, const JitSettings& settings) {
-    if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
+    if (!jit_) return failure("cannot start the LLVM JIT (--backend interp still works): " + startup_error_);
     if (width == 0) width = host_vector_width();
     const auto start = std::chrono::steady_clock::now();
     const GatherStrategy gathers = effective_gathers(settings);

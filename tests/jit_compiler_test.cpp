@@ -37,6 +37,22 @@ TEST(JitCompiler, NoiseKernelsUseVectorsOfTheChosenWidth) {
   EXPECT_NE(assembly->find("ymm"), std::string::npos);
 }
 
+// An if's branches become blocks that a conditional branch skips when no
+// lane takes them.
+TEST(JitCompiler, IfBranchesAreRegionsSkippedWhenNoLaneTakesThem) {
+  Result<LoadedGraph> loaded = compile_graph_text(testing::graph_text(
+      R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
+         {"id": "cond", "op": "lt", "in": {"a": "s.x", "b": 0.5}},
+         {"id": "t", "op": "turbulence", "in": {"p": "p"}}, {"id": "n", "op": "noise", "in": {"p": "p"}},
+         {"id": "pick", "op": "if", "in": {"cond": "cond", "then": "t", "else": "n"}})",
+      R"("color": "pick")"), "if.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+  EXPECT_NE(ir->find("label %after_region, label %region"), std::string::npos) << *ir;
+  EXPECT_NE(ir->find("label %after_region2, label %region1"), std::string::npos);
+}
+
 TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
   Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
   ASSERT_TRUE(loaded.ok());
