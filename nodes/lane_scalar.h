@@ -19,6 +19,7 @@ inline bool any(bool mask) { return mask; }
 inline bool both(bool a, bool b) { return a && b; }
 inline bool either(bool a, bool b) { return a || b; }
 inline bool negate(bool a) { return !a; }
+inline bool differ(bool a, bool b) { return a != b; }
 
 inline float floor(float x) { return std::floor(x); }
 inline float abs(float x) { return std::fabs(x); }
@@ -26,8 +27,6 @@ inline float sqrt(float x) { return std::sqrt(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float exp(float x) { return std::exp(x); }
 inline float log(float x) { return std::log(x); }
-inline float sin(float x) { return std::sin(x); }
-inline float cos(float x) { return std::cos(x); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
 inline std::int32_t min(std::int32_t a, std::int32_t b) { return a < b ? a : b; }

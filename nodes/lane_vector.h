@@ -35,14 +35,13 @@ SHADETREE_VECTOR_GATHERS(16)
   inline intv<W> both(intv<W> a, intv<W> b) { return a & b; }                                               \
   inline intv<W> either(intv<W> a, intv<W> b) { return a | b; }                                             \
   inline intv<W> negate(intv<W> a) { return ~a; }                                                           \
+  inline intv<W> differ(intv<W> a, intv<W> b) { return a ^ b; }                                             \
   inline floatv<W> floor(floatv<W> x) { return __builtin_elementwise_floor(x); }                            \
   inline floatv<W> abs(floatv<W> x) { return __builtin_elementwise_abs(x); }                                \
   inline floatv<W> sqrt(floatv<W> x) { return __builtin_elementwise_sqrt(x); }                              \
   inline floatv<W> pow(floatv<W> x, floatv<W> y) { return __builtin_elementwise_pow(x, y); }                \
   inline floatv<W> exp(floatv<W> x) { return __builtin_elementwise_exp(x); }                                \
   inline floatv<W> log(floatv<W> x) { return __builtin_elementwise_log(x); }                                \
-  inline floatv<W> sin(floatv<W> x) { return __builtin_elementwise_sin(x); }                                \
-  inline floatv<W> cos(floatv<W> x) { return __builtin_elementwise_cos(x); }                                \
   inline floatv<W> min(floatv<W> a, floatv<W> b) { return a < b ? a : b; }                                  \
   inline floatv<W> max(floatv<W> a, floatv<W> b) { return a > b ? a : b; }                                  \
   inline intv<W> min(intv<W> a, intv<W> b) { return a < b ? a : b; }                                        \

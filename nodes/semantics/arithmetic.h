@@ -3,6 +3,7 @@
 #pragma once
 
 #include "nodes/lane_scalar.h"
+#include "nodes/semantics/trigonometry.h"
 
 namespace shadetree::semantics {
 
@@ -24,8 +25,8 @@ template <class F> F power(F a, F b) { return pow(a, b); }
 template <class F> F square_root(F x) { return sqrt(x); }
 template <class F> F exponential(F x) { return exp(x); }
 template <class F> F logarithm(F x) { return log(x); }
-template <class F> F sine(F x) { return sin(x); }
-template <class F> F cosine(F x) { return cos(x); }
+template <class F> F sine(F x) { return sine_of(x); }
+template <class F> F cosine(F x) { return cosine_of(x); }
 template <class F> F mix(F a, F b, F t) { return a + (b - a) * t; }
 template <class F> F step(F edge, F x) { return select(x < edge, splat<F>(0.0f), splat<F>(1.0f)); }
 

@@ -5,6 +5,7 @@
 
 #include "nodes/lane_scalar.h"
 #include "nodes/limits.h"
+#include "nodes/semantics/trigonometry.h"
 
 namespace shadetree::semantics {
 
@@ -23,10 +24,10 @@ F sines(F x, F y, F frequency, F octaves) {
   for (int term = 0; term < max_octaves; ++term, amplitude *= 0.707f) {
     auto active = splat<F>(float(term)) < octaves;
     if (!any(active)) break;
-    F phase_x = sin(omega * y * 0.5f) * half_pi;
-    F phase_y = sin(omega * x * 0.5f) * half_pi;
-    series_x = series_x + select(active, (sin(omega * x + phase_x) + 1.0f) * amplitude, splat<F>(0.0f));
-    series_y = series_y + select(active, (sin(omega * y + phase_y) + 1.0f) * amplitude, splat<F>(0.0f));
+    F phase_x = sine_of(omega * y * 0.5f) * half_pi;
+    F phase_y = sine_of(omega * x * 0.5f) * half_pi;
+    series_x = series_x + select(active, (sine_of(omega * x + phase_x) + 1.0f) * amplitude, splat<F>(0.0f));
+    series_y = series_y + select(active, (sine_of(omega * y + phase_y) + 1.0f) * amplitude, splat<F>(0.0f));
     total_amplitude = total_amplitude + select(active, splat<F>(2.0f * amplitude), splat<F>(0.0f));
     omega = omega * 2.0f;
   }
