@@ -8,6 +8,7 @@
 // semantics, so both compute the same operations in the same order.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -24,9 +25,6 @@ inline bool differ(bool a, bool b) { return a != b; }
 inline float floor(float x) { return std::floor(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float sqrt(float x) { return std::sqrt(x); }
-inline float pow(float x, float y) { return std::pow(x, y); }
-inline float exp(float x) { return std::exp(x); }
-inline float log(float x) { return std::log(x); }
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
 inline std::int32_t min(std::int32_t a, std::int32_t b) { return a < b ? a : b; }
@@ -35,6 +33,10 @@ inline std::int32_t max(std::int32_t a, std::int32_t b) { return a > b ? a : b; 
 // x must already be integral and within int32 range.
 inline std::int32_t to_int(float x) { return static_cast<std::int32_t>(x); }
 inline float to_float(std::int32_t i) { return static_cast<float>(i); }
+
+// The bits of an IEEE float and back, for exponent arithmetic.
+inline std::int32_t to_bits(float x) { return std::bit_cast<std::int32_t>(x); }
+inline float from_bits(std::int32_t bits) { return std::bit_cast<float>(bits); }
 
 inline float gather(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { return table[index]; }

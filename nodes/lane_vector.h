@@ -39,15 +39,14 @@ SHADETREE_VECTOR_GATHERS(16)
   inline floatv<W> floor(floatv<W> x) { return __builtin_elementwise_floor(x); }                            \
   inline floatv<W> abs(floatv<W> x) { return __builtin_elementwise_abs(x); }                                \
   inline floatv<W> sqrt(floatv<W> x) { return __builtin_elementwise_sqrt(x); }                              \
-  inline floatv<W> pow(floatv<W> x, floatv<W> y) { return __builtin_elementwise_pow(x, y); }                \
-  inline floatv<W> exp(floatv<W> x) { return __builtin_elementwise_exp(x); }                                \
-  inline floatv<W> log(floatv<W> x) { return __builtin_elementwise_log(x); }                                \
   inline floatv<W> min(floatv<W> a, floatv<W> b) { return a < b ? a : b; }                                  \
   inline floatv<W> max(floatv<W> a, floatv<W> b) { return a > b ? a : b; }                                  \
   inline intv<W> min(intv<W> a, intv<W> b) { return a < b ? a : b; }                                        \
   inline intv<W> max(intv<W> a, intv<W> b) { return a > b ? a : b; }                                        \
   inline intv<W> to_int(floatv<W> x) { return __builtin_convertvector(x, intv<W>); }                        \
   inline floatv<W> to_float(intv<W> i) { return __builtin_convertvector(i, floatv<W>); }                    \
+  inline intv<W> to_bits(floatv<W> x) { return __builtin_bit_cast(intv<W>, x); }                             \
+  inline floatv<W> from_bits(intv<W> bits) { return __builtin_bit_cast(floatv<W>, bits); }                   \
   inline floatv<W> gather(const float* table, intv<W> index) {                                              \
     floatv<W> result;                                                                                        \
     st_gather_f32_w##W(&result, table, &index);                                                              \

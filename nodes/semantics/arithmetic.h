@@ -3,6 +3,7 @@
 #pragma once
 
 #include "nodes/lane_scalar.h"
+#include "nodes/semantics/exponential.h"
 #include "nodes/semantics/trigonometry.h"
 
 namespace shadetree::semantics {
@@ -21,10 +22,10 @@ template <class F> F absolute(F x) { return abs(x); }
 template <class F> F floor_of(F x) { return floor(x); }
 template <class F> F fract(F x) { return x - floor(x); }
 template <class F> F mod(F a, F b) { return a - b * floor(a / b); }
-template <class F> F power(F a, F b) { return pow(a, b); }
+template <class F> F power(F a, F b) { return power_of(a, b); }
 template <class F> F square_root(F x) { return sqrt(x); }
-template <class F> F exponential(F x) { return exp(x); }
-template <class F> F logarithm(F x) { return log(x); }
+template <class F> F exponential(F x) { return exponential_of(x); }
+template <class F> F logarithm(F x) { return logarithm_of(x); }
 template <class F> F sine(F x) { return sine_of(x); }
 template <class F> F cosine(F x) { return cosine_of(x); }
 template <class F> F mix(F a, F b, F t) { return a + (b - a) * t; }
@@ -43,7 +44,7 @@ template <class F>
 F bias(F t, F b) {
   t = clamp(t, splat<F>(0.0f), splat<F>(1.0f));
   b = clamp(b, splat<F>(1e-6f), splat<F>(1.0f - 1e-6f));
-  return pow(t, log(b) / log(splat<F>(0.5f)));
+  return power_of(t, logarithm_of(b) / logarithm_of(splat<F>(0.5f)));
 }
 
 // 1989 section 2.3: gain as a spline of two bias curves,
