@@ -231,7 +231,8 @@ class Jit {
       return;
     }
     jit_ = std::move(*jit);
-    // Kernels call libm (sinf, powf, ...) exactly as the interpreter does.
+    // Generated code may call C runtime helpers (memcpy, memset) that LLVM
+    // introduces; resolve them from the process.
     auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
         jit_->getDataLayout().getGlobalPrefix());
     if (!process) {
