@@ -1,48 +1,68 @@
 #include "render/image_output.h"
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <filesystem>
-
-#include <OpenImageIO/imageio.h>
+#include <mutex>
 
 namespace shadetree {
 
 namespace {
+
 std::string lowercase_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return extension;
 }
+
+// The OpenImageIO module (render/image_io_module.cpp), loaded on first use
+// from the folder of the running executable.
+struct ImageIoModule {
+  int (*write)(const char*, const char*, const float*, int, int, int, int, char*, std::size_t) = nullptr;
+  float* (*read)(const char*, int*, int*, int*, char*, std::size_t) = nullptr;
+  void (*release)(float*) = nullptr;
+  std::string error;
+};
+
+const ImageIoModule& image_io_module() {
+  static ImageIoModule module;
+  static std::once_flag loaded;
+  std::call_once(loaded, [] {
+    std::error_code error;
+    const auto folder = std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
+    const std::string path = (folder / "libshadetree_image_io.so").string();
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* reason = ::dlerror();
+      module.error = "cannot load image support (" + path + "): " + (reason ? reason : "unknown error");
+      return;
+    }
+    module.write = reinterpret_cast<decltype(module.write)>(::dlsym(handle, "shadetree_image_io_write"));
+    module.read = reinterpret_cast<decltype(module.read)>(::dlsym(handle, "shadetree_image_io_read"));
+    module.release = reinterpret_cast<decltype(module.release)>(::dlsym(handle, "shadetree_image_io_free"));
+    if (!module.write || !module.read || !module.release) module.error = "image support module " + path + " is incomplete";
+  });
+  return module;
+}
+
 }  // namespace
 
 Status write_image(const Image& image, const std::string& path) {
   const std::string extension = lowercase_extension(path);
-  OIIO::TypeDesc format;
-  if (extension == ".png") {
-    format = OIIO::TypeDesc::UINT8;
-  } else if (extension == ".exr") {
-    format = OIIO::TypeDesc::FLOAT;
-  } else {
+  if (extension != ".png" && extension != ".exr")
     return invalid_input("output \"" + path + "\": unsupported extension (use .png or .exr)");
-  }
+  const ImageIoModule& module = image_io_module();
+  if (!module.error.empty()) return failure(module.error);
   const std::filesystem::path target(path);
   const std::filesystem::path temporary =
       target.parent_path() / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()) + extension);
-  auto output = OIIO::ImageOutput::create(path);
-  if (!output) return failure("output \"" + path + "\": " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
-  spec.attribute("Software", "shadetree");
-  if (!output->open(temporary.string(), spec)) {
-    return failure("output \"" + path + "\": cannot write: " + output->geterror());
-  }
-  const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-  const bool closed = output->close();
-  if (!written || !closed) {
-    const std::string reason = output->geterror();
+  char reason[512] = "";
+  if (module.write(path.c_str(), temporary.c_str(), image.pixels.data(), image.width, image.height, image.channels,
+                   extension == ".png", reason, sizeof reason) != 0) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
-    return failure("output \"" + path + "\": write failed: " + reason);
+    return failure("output \"" + path + "\": " + reason);
   }
   std::error_code error;
   std::filesystem::rename(temporary, target, error);
@@ -54,16 +74,14 @@ Status write_image(const Image& image, const std::string& path) {
 }
 
 Result<Image> read_image(const std::string& path) {
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) return failure("cannot read image \"" + path + "\": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
+  const ImageIoModule& module = image_io_module();
+  if (!module.error.empty()) return failure(module.error);
   Image image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.channels = spec.nchannels;
-  image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    return failure("cannot read image \"" + path + "\": " + input->geterror());
+  char reason[512] = "";
+  float* pixels = module.read(path.c_str(), &image.width, &image.height, &image.channels, reason, sizeof reason);
+  if (!pixels) return failure("cannot read image \"" + path + "\": " + reason);
+  image.pixels.assign(pixels, pixels + static_cast<std::size_t>(image.width) * image.height * image.channels);
+  module.release(pixels);
   return image;
 }
 

@@ -1,0 +1,65 @@
+// The OpenImageIO side of image output, built as a loadable module
+// (libshadetree_image_io.so) so that only commands that read or write
+// images pay for loading OpenImageIO: Debian's build of it pulls in some
+// 250 shared libraries (GDAL, OpenVDB, Xerces...), a quarter of a second of
+// dynamic linking at every start. render/image_output.cpp loads it.
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <OpenImageIO/imageio.h>
+
+namespace {
+void set_error(char* error, std::size_t size, const std::string& message) {
+  std::snprintf(error, size, "%s", message.c_str());
+}
+}  // namespace
+
+// Writes the pixels to `file` in the format `format_path`'s extension names;
+// 8-bit when `eight_bit`, 32-bit float otherwise. 0 on success.
+extern "C" int shadetree_image_io_write(const char* format_path, const char* file, const float* pixels, int width,
+                                        int height, int channels, int eight_bit, char* error, std::size_t error_size) {
+  auto output = OIIO::ImageOutput::create(format_path);
+  if (!output) {
+    set_error(error, error_size, OIIO::geterror());
+    return 1;
+  }
+  OIIO::ImageSpec spec(width, height, channels, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+  spec.attribute("Software", "shadetree");
+  if (!output->open(file, spec)) {
+    set_error(error, error_size, "cannot write: " + output->geterror());
+    return 1;
+  }
+  const bool written = output->write_image(OIIO::TypeDesc::FLOAT, pixels);
+  const bool closed = output->close();
+  if (!written || !closed) {
+    set_error(error, error_size, "write failed: " + output->geterror());
+    return 1;
+  }
+  return 0;
+}
+
+// Reads any image OpenImageIO knows as float pixels (malloc'ed; release
+// with shadetree_image_io_free). Null on failure.
+extern "C" float* shadetree_image_io_read(const char* path, int* width, int* height, int* channels, char* error,
+                                          std::size_t error_size) {
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) {
+    set_error(error, error_size, OIIO::geterror());
+    return nullptr;
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels;
+  auto* pixels = static_cast<float*>(std::malloc(count * sizeof(float)));
+  if (!pixels || !input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels)) {
+    set_error(error, error_size, pixels ? input->geterror() : std::string("out of memory"));
+    std::free(pixels);
+    return nullptr;
+  }
+  *width = spec.width;
+  *height = spec.height;
+  *channels = spec.nchannels;
+  return pixels;
+}
+
+extern "C" void shadetree_image_io_free(float* pixels) { std::free(pixels); }
