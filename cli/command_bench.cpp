@@ -111,6 +111,7 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (arguments.gathers == "hardware") settings.gathers = GatherStrategy::hardware;
     if (arguments.gathers == "per-lane") settings.gathers = GatherStrategy::per_lane;
     if (arguments.gathers == "in-register") settings.gathers = GatherStrategy::in_register;
+    if (arguments.gathers == "in-register-bytes") settings.gathers = GatherStrategy::in_register_byte_permutes;
     JitSettings cold_settings = settings;
     cold_settings.cold = true;
     Result<CompiledKernel> cold = compile_kernel(loaded->ir, 0, cold_settings);
@@ -160,8 +161,8 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--repetitions", arguments->repetitions, "timed runs per measurement (default 7)")
       ->check(CLI::Range(1, 1000));
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
-  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane or in-register (default: the host's)")
-      ->check(CLI::IsMember({"hardware", "per-lane", "in-register"}));
+  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register or in-register-bytes (default: the host's)")
+      ->check(CLI::IsMember({"hardware", "per-lane", "in-register", "in-register-bytes"}));
   command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });
 }
 

@@ -411,6 +411,47 @@ llvm::Value* in_register_lookup(llvm::IRBuilder<>& builder, llvm::Module& module
   return candidates[0];
 }
 
+// A 256-entry int table whose values fit in a byte (the noise permutation),
+// looked up with AVX-512 VBMI byte permutes: the table as 256 bytes in four
+// registers, two vpermi2b on the index's low 7 bits, a select on bit 7.
+llvm::Value* byte_permute_lookup(llvm::IRBuilder<>& builder, llvm::Module& module, llvm::Value* table,
+                                 llvm::Value* index) {
+  auto* bytes = llvm::FixedVectorType::get(builder.getInt8Ty(), 64);
+  auto* ints = llvm::FixedVectorType::get(builder.getInt32Ty(), 16);
+  llvm::Function* permute = llvm::Intrinsic::getDeclaration(&module, llvm::Intrinsic::x86_avx512_vpermi2var_qi_512);
+  // The table's 256 ints narrowed to bytes, as four 64-byte registers
+  // (loop-invariant: hoisted out of the sample loop).
+  std::vector<llvm::Value*> quarters;
+  for (int quarter = 0; quarter < 4; ++quarter) {
+    std::vector<llvm::Value*> parts;
+    for (int part = 0; part < 4; ++part) {
+      llvm::Value* chunk = builder.CreateAlignedLoad(
+          ints, builder.CreateConstInBoundsGEP1_32(builder.getInt32Ty(), table, 64 * quarter + 16 * part),
+          llvm::Align(4));
+      parts.push_back(builder.CreateTrunc(chunk, llvm::FixedVectorType::get(builder.getInt8Ty(), 16)));
+    }
+    std::vector<int> first(32), second(32), all(64);
+    for (int i = 0; i < 32; ++i) first[i] = second[i] = i;
+    for (int i = 0; i < 64; ++i) all[i] = i;
+    llvm::Value* low = builder.CreateShuffleVector(parts[0], parts[1], first);
+    llvm::Value* high = builder.CreateShuffleVector(parts[2], parts[3], second);
+    quarters.push_back(builder.CreateShuffleVector(low, high, all));
+  }
+  // The 16 indices as the first 16 bytes of a 64-byte index register.
+  std::vector<int> widen(64);
+  for (int i = 0; i < 64; ++i) widen[i] = i < 16 ? i : 16;
+  llvm::Value* narrow = builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
+  llvm::Value* byte_index =
+      builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
+  llvm::Value* low_half = builder.CreateCall(permute, {quarters[0], byte_index, quarters[1]});
+  llvm::Value* high_half = builder.CreateCall(permute, {quarters[2], byte_index, quarters[3]});
+  llvm::Value* upper = builder.CreateICmpSLT(byte_index, llvm::Constant::getNullValue(bytes));  // bit 7
+  llvm::Value* chosen = builder.CreateSelect(upper, high_half, low_half);
+  std::vector<int> first16(16);
+  for (int i = 0; i < 16; ++i) first16[i] = i;
+  return builder.CreateZExt(builder.CreateShuffleVector(chosen, first16), ints);
+}
+
 // Defines the library's table lookups st_gather[256]_<type>_w<W>(out, table,
 // index) with the chosen strategy.
 void define_gathers(llvm::Module& module, GatherStrategy strategy) {
@@ -431,8 +472,11 @@ void define_gathers(llvm::Module& module, GatherStrategy strategy) {
         llvm::Value* table = &*args++;
         llvm::Value* index = builder.CreateLoad(index_type, &*args);
         llvm::Value* result;
-        const bool in_register = strategy == GatherStrategy::in_register && width == 16;
-        if (in_register && table256) {
+        const bool byte_permutes = strategy == GatherStrategy::in_register_byte_permutes;
+        const bool in_register = (strategy == GatherStrategy::in_register || byte_permutes) && width == 16;
+        if (in_register && table256 && byte_permutes && !is_float) {
+          result = byte_permute_lookup(builder, module, table, index);
+        } else if (in_register && table256) {
           result = in_register_lookup(builder, module, is_float, table, index);
         } else if (strategy == GatherStrategy::hardware || in_register) {
           result = builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));

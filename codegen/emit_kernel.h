@@ -31,8 +31,9 @@ using KernelFunction = void (*)(const float* params, const float* const* input_p
 // How the op library's table lookups become instructions: one hardware
 // gather per lookup (vgatherdps / vpgatherdd); one scalar load per lane; or,
 // at width 16 (AVX-512), permutes over the 256-entry noise tables held in
-// registers and hardware gathers for the other tables (splines).
-enum class GatherStrategy { hardware, per_lane, in_register };
+// registers and hardware gathers for the other tables (splines); the last
+// also looks the noise permutation up as bytes (AVX-512 VBMI).
+enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes };
 
 // The module holds the kernel (named `function_name`) and the op library it
 // calls, marked for inlining.

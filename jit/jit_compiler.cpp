@@ -33,11 +33,20 @@
 namespace shadetree {
 namespace {
 
+bool host_has(const char* feature) {
+  static const auto features = llvm::sys::getHostCPUFeatures();
+  auto found = features.find(feature);
+  return found != features.end() && found->second;
+}
+
 // In-register lookups use AVX-512 instructions: never emit them on a host
 // without it, whatever the settings ask for.
 GatherStrategy effective_gathers(const JitSettings& settings) {
   const GatherStrategy wanted = settings.gathers.value_or(host_gather_strategy());
-  if (wanted == GatherStrategy::in_register && host_vector_width() < 16) return GatherStrategy::per_lane;
+  const bool needs_avx512 =
+      wanted == GatherStrategy::in_register || wanted == GatherStrategy::in_register_byte_permutes;
+  if (needs_avx512 && host_vector_width() < 16) return GatherStrategy::per_lane;
+  if (wanted == GatherStrategy::in_register_byte_permutes && !host_has("avx512vbmi")) return GatherStrategy::in_register;
   return wanted;
 }
 
@@ -287,13 +296,8 @@ class Jit {
 }  // namespace
 
 int host_vector_width() {
-  const auto features = llvm::sys::getHostCPUFeatures();
-  auto has = [&](const char* name) {
-    auto found = features.find(name);
-    return found != features.end() && found->second;
-  };
-  if (has("avx512f")) return 16;
-  if (has("avx2")) return 8;
+  if (host_has("avx512f")) return 16;
+  if (host_has("avx2")) return 8;
   return 4;
 }
 
@@ -302,10 +306,12 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
 }
 
 // Measured with `shadetree bench --gathers` (figures in docs/architecture.md):
-// per-lane loads beat vgatherdps on the x86 parts we have, and permutes over
-// registers beat both where AVX-512 allows them.
+// per-lane loads beat vgatherdps on the x86 parts we have, permutes over
+// registers beat both where AVX-512 allows them, and byte permutes (VBMI)
+// do the noise permutation cheaper still.
 GatherStrategy host_gather_strategy() {
-  return host_vector_width() == 16 ? GatherStrategy::in_register : GatherStrategy::per_lane;
+  if (host_vector_width() < 16) return GatherStrategy::per_lane;
+  return host_has("avx512vbmi") ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
 }
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {

@@ -127,7 +127,8 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
   for (int width : {4, 8, 16})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
   if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
-  for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register})
+  for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
+                                 GatherStrategy::in_register_byte_permutes})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 16, gathers), "")
         << "gather strategy " << static_cast<int>(gathers);
 }
