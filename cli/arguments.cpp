@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "graph/number_list.h"
+#include "graph/parse.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 
@@ -14,8 +15,9 @@ Result<std::pair<int, int>> parse_size(const std::string& text) {
   std::istringstream stream(text);
   if (!(stream >> width >> separator >> height) || separator != 'x' || (stream >> trailing))
     return invalid_input("--size expects WIDTHxHEIGHT, got \"" + text + "\"");
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    return invalid_input("--size " + text + ": each side must be between 1 and 16384 pixels");
+  if (width < 1 || height < 1 || width > max_image_side || height > max_image_side)
+    return invalid_input("--size " + text + ": each side must be between 1 and " + std::to_string(max_image_side) +
+                         " pixels");
   return std::pair{width, height};
 }
 

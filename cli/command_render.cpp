@@ -28,6 +28,9 @@ struct RenderArguments {
 ExitStatus render(const RenderArguments& arguments) {
   Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
   if (!loaded) return report(loaded.error());
+  // Refuse an output we cannot write before spending time on the render.
+  Status writable = check_image_path(arguments.output);
+  if (!writable) return report(writable.error());
   if (loaded->graph->kind != "texture")
     return report({ExitStatus::invalid_input, arguments.file, {}, {},
                    "render supports texture graphs for now; this is a " + loaded->graph->kind + " graph"});

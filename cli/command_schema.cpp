@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "graph/graph.h"
+#include "graph/parse.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -68,7 +69,7 @@ json graph_schema() {
   const json render = {
       {"type", "object"},
       {"properties",
-       {{"size", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}, {"maximum", 16384}}},
+       {{"size", {{"type", "array"}, {"items", {{"type", "integer"}, {"minimum", 1}, {"maximum", max_image_side}}},
                   {"minItems", 2}, {"maxItems", 2}}},
         {"domain", {{"type", "object"},
                     {"required", {"min", "max"}},

@@ -40,11 +40,6 @@ int input_plane(OpId op) {
   }
 }
 
-bool uses_noise_tables(OpId op) {
-  return op == OpId::noise || op == OpId::dnoise || op == OpId::vnoise || op == OpId::turbulence ||
-         op == OpId::fbm;
-}
-
 class KernelEmitter {
  public:
   KernelEmitter(const ShadeIR& ir, int width, llvm::Module& module)

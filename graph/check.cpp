@@ -26,10 +26,6 @@ std::string join_names(const std::vector<std::string>& names) {
 
 std::string type_text(Type type) { return std::string(type_name(type)); }
 
-bool op_has_seed(OpId id) {
-  return id == OpId::noise || id == OpId::dnoise || id == OpId::vnoise || id == OpId::turbulence || id == OpId::fbm;
-}
-
 // The signature of whatever a node calls: a library op or a function.
 struct Callee {
   const OpDef* op = nullptr;
@@ -81,10 +77,14 @@ class Checker {
     const FunctionDef& function = graph_.functions[index];
     if (function_state_[index] == State::in_progress)
       fail({}, {}, "function \"" + function.name + "\" calls itself (directly or through other functions)");
+    if (++function_depth_ > max_function_nesting)
+      fail({}, {}, "function \"" + function.name + "\" is nested more than " + std::to_string(max_function_nesting) +
+                       " calls deep");
     function_state_[index] = State::in_progress;
     functions_[index].definition = &function;
     functions_[index].body = check_body(function.nodes, function.outputs, &function);
     function_state_[index] = State::done;
+    --function_depth_;
   }
 
   Callee resolve_callee(const Node& node) {
@@ -157,28 +157,43 @@ class Checker {
   }
 
   // Depth-first topological order; a back edge is a cycle, reported with
-  // its path.
+  // its path. The walk keeps its own stack: a long chain of nodes must not
+  // overflow the machine's.
   void order_nodes(Body& body) const {
     const auto& nodes = *body.nodes;
     std::vector<State> state(nodes.size(), State::unvisited);
-    std::vector<int> path;
-    std::function<void(int)> visit = [&](int index) {
-      if (state[index] == State::done) return;
-      if (state[index] == State::in_progress) {
-        std::string cycle;
-        auto start = std::find(path.begin(), path.end(), index);
-        for (auto it = start; it != path.end(); ++it) cycle += nodes[*it].id + " -> ";
-        fail(nodes[index].id, {}, "cycle: " + cycle + nodes[index].id);
-      }
-      state[index] = State::in_progress;
-      path.push_back(index);
-      for (const auto& [input, value] : nodes[index].inputs)
-        if (value.kind == InputValue::Kind::node) visit(referenced_node(body, nodes[index], input, value));
-      path.pop_back();
-      state[index] = State::done;
-      body.order.push_back(index);
+    struct Frame {
+      int node;
+      std::size_t next_input;
     };
-    for (std::size_t i = 0; i < nodes.size(); ++i) visit(static_cast<int>(i));
+    std::vector<Frame> path;
+    for (std::size_t root = 0; root < nodes.size(); ++root) {
+      if (state[root] != State::unvisited) continue;
+      state[root] = State::in_progress;
+      path.push_back({static_cast<int>(root), 0});
+      while (!path.empty()) {
+        Frame& frame = path.back();
+        const Node& node = nodes[frame.node];
+        if (frame.next_input == node.inputs.size()) {
+          state[frame.node] = State::done;
+          body.order.push_back(frame.node);
+          path.pop_back();
+          continue;
+        }
+        const auto& [input, value] = node.inputs[frame.next_input++];
+        if (value.kind != InputValue::Kind::node) continue;
+        const int next = referenced_node(body, node, input, value);
+        if (state[next] == State::done) continue;
+        if (state[next] == State::in_progress) {
+          std::string cycle;
+          auto start = std::find_if(path.begin(), path.end(), [&](const Frame& f) { return f.node == next; });
+          for (auto it = start; it != path.end(); ++it) cycle += nodes[it->node].id + " -> ";
+          fail(nodes[next].id, {}, "cycle: " + cycle + nodes[next].id);
+        }
+        state[next] = State::in_progress;
+        path.push_back({next, 0});
+      }
+    }
   }
 
   // The type and origin of an input value (before conversion).
@@ -376,7 +391,7 @@ class Checker {
         fail(node.id, {}, "unknown field \"" + name + "\" (inputs go in \"in\"; attributes of " + op.name + ": " +
                               join_names(names) + ")");
     }
-    if (op_has_seed(op.id)) {
+    if (uses_noise_tables(op.id)) {
       checked.immediate[0] = static_cast<std::int32_t>(default_noise_seed);
       if (const AttributeValue* seed = attribute(node, op, "seed")) {
         if (seed->kind != AttributeValue::Kind::number || seed->number != std::floor(seed->number) ||
@@ -533,6 +548,7 @@ class Checker {
   std::map<std::string, int> function_index_;
   std::vector<CheckedFunction> functions_;
   std::vector<State> function_state_;
+  int function_depth_ = 0;
 };
 
 }  // namespace

@@ -59,6 +59,9 @@ struct CheckedGraph {
   std::vector<CheckedFunction> functions;
 };
 
+// Functions calling functions: deeper chains are reported, not recursed into.
+inline constexpr int max_function_nesting = 64;
+
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph);
 
 // The outputs each graph kind must provide, and the types each accepts.

@@ -13,7 +13,7 @@ class Lowering {
  public:
   explicit Lowering(const CheckedGraph& graph) : graph_(graph) {}
 
-  ShadeIR run() {
+  Result<ShadeIR> run() {
     const Graph& source = *graph_.graph;
     for (const ParamDecl& param : source.params) {
       ir_.params.push_back({param.name, param.type, ir_.param_block_size});
@@ -21,6 +21,10 @@ class Lowering {
     }
     param_values_.assign(source.params.size(), -1);
     auto outputs = lower_body(graph_.main, {});
+    if (ir_.code.size() > max_program_instructions)
+      return Diagnostic{ExitStatus::invalid_input, graph_.graph->file, {}, {},
+                        "the graph expands to more than " + std::to_string(max_program_instructions) +
+                            " instructions once its functions are inlined"};
     for (std::size_t i = 0; i < graph_.main.outputs.size(); ++i)
       ir_.outputs.push_back({graph_.main.outputs[i].name, outputs[i].second, outputs[i].first});
     return std::move(ir_);
@@ -70,6 +74,7 @@ class Lowering {
       return {-1, target};
     };
     for (std::size_t n = 0; n < body.nodes.size(); ++n) {
+      if (ir_.code.size() > max_program_instructions) return std::vector<TypedValue>(body.outputs.size(), {0, Type::float_});
       const CheckedNode& node = body.nodes[n];
       std::vector<TypedValue> inputs;
       for (std::size_t i = 0; i < node.inputs.size(); ++i)

@@ -10,10 +10,14 @@
 
 namespace shadetree {
 
+// Inlining can multiply a small file into a huge program (functions that
+// call functions twice over); past this many instructions lowering stops
+// with a diagnostic instead of exhausting memory.
+inline constexpr std::size_t max_program_instructions = 50000;
+
 Result<ShadeIR> lower(const CheckedGraph& graph);
 
-// The uniform block for a graph's params: defaults, with `overrides`
-// (param index -> value) applied.
+// The uniform block for a graph's params: their defaults.
 std::vector<float> param_block(const Graph& graph, const ShadeIR& ir);
 
 }  // namespace shadetree

@@ -39,7 +39,8 @@ class Parser {
     const std::string format = required_string(document, "format", {});
     if (format != "shadetree-graph")
       fail({}, {}, "field \"format\" must be \"shadetree-graph\", got \"" + format + "\"");
-    if (!document.contains("version") || !document["version"].is_number_integer())
+    if (!document.contains("version") || !document["version"].is_number_integer() ||
+        document["version"].get<double>() < 0 || document["version"].get<double>() > 1e6)
       fail({}, {}, "field \"version\" must be an integer (this shadetree reads version " +
                        std::to_string(graph_format_version) + ")");
     graph.version = document["version"].get<int>();
@@ -242,6 +243,8 @@ class Parser {
       const auto dot = text.find('.');
       result.node = text.substr(0, dot);
       if (dot != std::string::npos) result.output = text.substr(dot + 1);
+      if (result.node.empty() || (dot != std::string::npos && result.output.empty()))
+        fail(node, input, "malformed reference \"" + text + "\" (write \"id\" or \"id.output\")");
       return result;
     }
     if (value.is_boolean()) {
@@ -313,11 +316,12 @@ class Parser {
       const json& size = render["size"];
       if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer())
         fail({}, {}, "render size must be [width, height] in pixels");
-      settings.width = size[0].get<int>();
-      settings.height = size[1].get<int>();
-      if (settings.width < 1 || settings.height < 1 || settings.width > max_image_side ||
-          settings.height > max_image_side)
+      // Range-check before narrowing, so that 2^32 + 2 is not read as 2.
+      const double width = size[0].get<double>(), height = size[1].get<double>();
+      if (width < 1 || height < 1 || width > max_image_side || height > max_image_side)
         fail({}, {}, "render size must be between 1 and " + std::to_string(max_image_side) + " pixels a side");
+      settings.width = static_cast<int>(width);
+      settings.height = static_cast<int>(height);
     }
     if (render.contains("domain")) {
       const json& domain = render["domain"];
@@ -344,10 +348,21 @@ class Parser {
 
 }  // namespace
 
+// Graph files are shallow; deeper nesting is refused while parsing, before
+// it can be built (a deep enough document would overflow the stack).
+constexpr int max_json_depth = 64;
+struct TooDeep {};
+
 Result<Graph> parse_graph(const std::string& json_text, const std::string& file) {
   json document;
   try {
-    document = json::parse(json_text);
+    document = json::parse(json_text, [](int depth, json::parse_event_t, json&) {
+      if (depth > max_json_depth) throw TooDeep{};
+      return true;
+    });
+  } catch (const TooDeep&) {
+    return Diagnostic{ExitStatus::invalid_input, file, {}, {},
+                      "JSON nested deeper than " + std::to_string(max_json_depth) + " levels"};
   } catch (const json::parse_error& error) {
     std::string reason = error.what();
     const auto start = reason.find("parse error");
@@ -371,12 +386,15 @@ Result<Graph> load_graph(const std::string& path) {
     return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "is a directory, not a graph file"};
   std::ifstream stream(path, std::ios::binary);
   if (!stream) return Diagnostic{ExitStatus::failure, path, {}, {}, "cannot open file"};
-  std::ostringstream text;
-  text << stream.rdbuf();
+  // Read at most one byte past the limit, whatever the file claims to be
+  // (a device or a sparse file may report any size).
+  std::string text(max_graph_file_bytes + 1, '\0');
+  stream.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (stream.bad()) return Diagnostic{ExitStatus::failure, path, {}, {}, "cannot read file"};
-  if (text.str().size() > max_graph_file_bytes)
+  text.resize(static_cast<std::size_t>(stream.gcount()));
+  if (text.size() > max_graph_file_bytes)
     return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "file is larger than the 16 MiB limit"};
-  return parse_graph(text.str(), path);
+  return parse_graph(text, path);
 }
 
 }  // namespace shadetree

@@ -9,7 +9,8 @@
 
 namespace shadetree {
 
-// Limits that keep a malformed or hostile file from exhausting memory.
+// Limits on what a graph file may hold (see also lower.h:
+// max_program_instructions, and check.h: max_function_nesting).
 inline constexpr std::size_t max_graph_file_bytes = 16u << 20;
 inline constexpr std::size_t max_nodes_per_graph = 100000;
 inline constexpr int max_image_side = 16384;

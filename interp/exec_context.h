@@ -32,7 +32,7 @@ struct ExecContext {
   const IrInstr* instr;
   std::int32_t self;
   float* registers;
-  const std::int32_t* register_offset;  // value -> first float of its planes
+  const std::size_t* register_offset;  // value -> first float of its planes
   int block;                            // floats per plane
   Lanes lanes;
   const NoiseTables* tables;  // resolved from the seed, for noise ops

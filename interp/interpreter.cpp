@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "interp/exec_context.h"
+#include "nodes/registry.h"
 
 namespace shadetree {
 namespace {
@@ -22,18 +23,17 @@ class InterpretedKernel final : public Kernel {
     register_offset_.resize(ir_.code.size());
     kernels_.resize(ir_.code.size(), nullptr);
     tables_.resize(ir_.code.size(), nullptr);
-    std::int32_t offset = 0;
+    std::size_t offset = 0;
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       register_offset_[i] = offset;
-      offset += component_count(instr.type) * interpreter_block_size;
+      offset += static_cast<std::size_t>(component_count(instr.type) * interpreter_block_size);
       if (instr.kind != IrOpKind::op) continue;
       kernels_[i] = interp::op_kernel(instr.op);
-      if (instr.op == OpId::noise || instr.op == OpId::dnoise || instr.op == OpId::vnoise ||
-          instr.op == OpId::turbulence || instr.op == OpId::fbm)
+      if (uses_noise_tables(instr.op))
         tables_[i] = &noise_tables(static_cast<std::uint32_t>(instr.immediate[0]));
     }
-    register_floats_ = static_cast<std::size_t>(offset);
+    register_floats_ = offset;
   }
 
   const ShadeIR& ir() const override { return ir_; }
@@ -133,7 +133,7 @@ class InterpretedKernel final : public Kernel {
   }
 
   ShadeIR ir_;
-  std::vector<std::int32_t> register_offset_;
+  std::vector<std::size_t> register_offset_;
   std::vector<interp::OpKernel> kernels_;
   std::vector<const NoiseTables*> tables_;
   std::size_t register_floats_ = 0;

@@ -108,12 +108,15 @@ class DiskObjectCache final : public llvm::ObjectCache {
     const auto target = folder_ / (module->getModuleIdentifier() + ".o");
     const auto temporary =
         folder_ / (module->getModuleIdentifier() + ".o.partial-" + std::to_string(static_cast<long>(::getpid())));
-    {
-      std::ofstream file(temporary, std::ios::binary);
-      file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
-      if (!file) return;
+    std::ofstream file(temporary, std::ios::binary);
+    file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
+    file.close();
+    if (!file) {  // a cache that cannot be written is only a missed speed-up
+      std::filesystem::remove(temporary, error);
+      return;
     }
     std::filesystem::rename(temporary, target, error);
+    if (error) std::filesystem::remove(temporary, error);
   }
   std::unique_ptr<llvm::MemoryBuffer> getObject(const llvm::Module*) override { return nullptr; }
   void set_folder(std::filesystem::path folder) { folder_ = std::move(folder); }
@@ -170,8 +173,7 @@ class Jit {
   }
 
   Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                               const std::string& name, GatherStrategy gathers,
-                                                               bool optimize = true) {
+                                                               const std::string& name, GatherStrategy gathers) {
     if (!target_machine_) return failure("cannot start the LLVM JIT: " + startup_error_);
     Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
     if (!module) return module.error();
@@ -183,9 +185,11 @@ class Jit {
       function.addFnAttr("target-cpu", target_machine_->getTargetCPU());
       function.addFnAttr("target-features", target_machine_->getTargetFeatureString());
     }
-    if (optimize) optimize_module(m);
+    optimize_module(m);
     return module;
   }
+
+  std::mutex& mutex() { return mutex_; }
 
   Result<std::string> assembly(llvm::Module& module) {
     llvm::SmallString<0> text;
@@ -316,18 +320,15 @@ GatherStrategy host_gather_strategy() {
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();
+  std::lock_guard lock(Jit::instance().mutex());  // the target machine is shared with compile()
   llvm::LLVMContext context;
   Result<std::unique_ptr<llvm::Module>> module = Jit::instance().build_optimized_module(
-      ir, width, context, "shade_kernel", effective_gathers(settings), listing != Listing::llvm_ir);
+      ir, width, context, "shade_kernel", effective_gathers(settings));
   if (!module) return module.error();
   if (listing == Listing::assembly) return Jit::instance().assembly(**module);
   std::string text;
   llvm::raw_string_ostream stream(text);
-  if (listing == Listing::llvm_ir) {
-    (*module)->getFunction("shade_kernel")->print(stream);
-  } else {
-    (*module)->print(stream, nullptr);
-  }
+  (*module)->print(stream, nullptr);
   return text;
 }
 

@@ -42,8 +42,8 @@ GatherStrategy host_gather_strategy();
 // Thread-safe. LLVM failures come back as diagnostics with status 1.
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
 
-// The kernel's LLVM IR before or after optimization, or its assembly.
-enum class Listing { llvm_ir, optimized_llvm_ir, assembly };
+// The kernel's optimized LLVM IR, or its assembly.
+enum class Listing { optimized_llvm_ir, assembly };
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings = {});
 
 }  // namespace shadetree

@@ -10,6 +10,10 @@ const OpDef* find_op(std::string_view name) {
   return nullptr;
 }
 
+bool uses_noise_tables(OpId id) {
+  return id == OpId::noise || id == OpId::dnoise || id == OpId::vnoise || id == OpId::turbulence || id == OpId::fbm;
+}
+
 std::string_view family_name(OpFamily family) {
   switch (family) {
     case OpFamily::input: return "inputs";

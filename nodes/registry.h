@@ -75,6 +75,9 @@ struct OpDef {
 };
 
 std::span<const OpDef> all_ops();
+
+// Ops that read the seeded noise tables (and take a `seed` attribute).
+bool uses_noise_tables(OpId id);
 const OpDef& op_def(OpId id);
 const OpDef* find_op(std::string_view name);
 std::string_view family_name(OpFamily family);

@@ -48,10 +48,21 @@ const ImageIoModule& image_io_module() {
 
 }  // namespace
 
-Status write_image(const Image& image, const std::string& path) {
+Status check_image_path(const std::string& path) {
   const std::string extension = lowercase_extension(path);
   if (extension != ".png" && extension != ".exr")
     return invalid_input("output \"" + path + "\": unsupported extension (use .png or .exr)");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code error;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+    return failure("output \"" + path + "\": folder \"" + folder.string() + "\" does not exist");
+  return success();
+}
+
+Status write_image(const Image& image, const std::string& path) {
+  Status writable = check_image_path(path);
+  if (!writable) return writable;
+  const std::string extension = lowercase_extension(path);
   const ImageIoModule& module = image_io_module();
   if (!module.error.empty()) return failure(module.error);
   const std::filesystem::path target(path);

@@ -10,6 +10,10 @@
 
 namespace shadetree {
 
+// Whether `path` names a format we write (.png or .exr) in an existing
+// folder: checked before a render so that a typo costs no render time.
+Status check_image_path(const std::string& path);
+
 // PNG (8-bit, values clamped to [0,1]) or EXR (32-bit float, unclamped),
 // chosen by the extension of `path`.
 Status write_image(const Image& image, const std::string& path);

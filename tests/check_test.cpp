@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "graph/check.h"
+#include "graph/compile_graph.h"
 #include "graph/parse.h"
 #include "support/graph_text.h"
 
@@ -180,6 +181,49 @@ TEST(Check, AlphaMustBeAFloat) {
 TEST(Check, DensityIsOnlyForVolumes) {
   EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "density"})", color_out)),
             "error: g.json: node \"c\": op \"density\" is only available in volume graphs, this is a texture graph");
+}
+
+TEST(Check, RefusesFunctionsThatExpandBeyondTheInstructionLimit) {
+  // Each level calls the one below twice: 2^20 copies of the innermost node.
+  std::string functions = R"("functions": {"f0": {"inputs": {"x": "float"},
+      "nodes": [{"id": "n", "op": "neg", "in": {"x": "$x"}}], "outputs": {"y": "n"}})";
+  for (int level = 1; level <= 20; ++level) {
+    const std::string below = "f" + std::to_string(level - 1);
+    functions += ", \"f" + std::to_string(level) + R"(": {"inputs": {"x": "float"}, "nodes": [
+        {"id": "a", "op": ")" + below + R"(", "in": {"x": "$x"}},
+        {"id": "b", "op": ")" + below + R"(", "in": {"x": "a"}}], "outputs": {"y": "b"}})";
+  }
+  functions += "},";
+  Result<LoadedGraph> loaded = compile_graph_text(
+      graph_text(R"({"id": "c", "op": "f20", "in": {"x": 1}})", color_out, functions), "bomb.json");
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_EQ(loaded.error().to_string(),
+            "error: bomb.json: the graph expands to more than 50000 instructions once its functions are inlined");
+  EXPECT_EQ(loaded.error().status, ExitStatus::invalid_input);
+}
+
+TEST(Check, LongChainsDoNotExhaustTheStack) {
+  // 60000 nodes listed last to first: the ordering walk goes 60000 deep.
+  std::string nodes = R"({"id": "c", "op": "color", "in": {"r": "n59999"}})";
+  for (int i = 59999; i >= 1; --i)
+    nodes += R"(, {"id": "n)" + std::to_string(i) + R"(", "op": "neg", "in": {"x": "n)" + std::to_string(i - 1) + "\"}}";
+  nodes += R"(, {"id": "n0", "op": "time"})";
+  EXPECT_EQ(diagnose(graph_text(nodes, color_out)), "ok");
+}
+
+TEST(Check, RefusesDeeplyNestedJson) {
+  std::string deep(100000, '[');
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "noise", "in": {"p": )" + deep + "}}", color_out)),
+            "error: g.json: JSON nested deeper than 64 levels");
+}
+
+TEST(Check, RefusesMalformedReferencesAndOversizedRenders) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "s", "op": "P"}, {"id": "c", "op": "to_color", "in": {"v": "s."}})",
+                                color_out)),
+            "error: g.json: node \"c\" input \"v\": malformed reference \"s.\" (write \"id\" or \"id.output\")");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "c", "op": "color"})", color_out,
+                                R"("render": {"size": [4294967298, 3]},)")),
+            "error: g.json: render size must be between 1 and 16384 pixels a side");
 }
 
 TEST(ParamValue, ParsesAndRangeChecksSetValues) {

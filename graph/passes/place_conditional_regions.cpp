@@ -9,7 +9,6 @@
 // bracketed by begin_region / end_region, right before their `if`.
 #include "graph/passes/place_conditional_regions.h"
 
-#include <functional>
 
 namespace shadetree {
 namespace {
@@ -83,21 +82,38 @@ void place_conditional_regions(ShadeIR& ir) {
     bool else_branch = false;
   };
   std::vector<Slot> schedule;
-  std::function<void(int)> emit = [&](int r) {
-    for (int v : members[r]) {
-      if (is_if(ir.code[v])) {
-        for (bool else_branch : {false, true}) {
-          const int branch = else_branch ? else_region[v] : then_region[v];
-          if (members[branch].empty()) continue;
-          schedule.push_back({-1, v, else_branch});
-          emit(branch);
-          schedule.push_back({-2, v, else_branch});
-        }
-      }
-      schedule.push_back({v});
-    }
+  // Walks the region tree with its own stack, since ifs may nest deeply.
+  // A frame is a region, the member reached, and for an if member how many
+  // of its two branches have been opened.
+  struct Frame {
+    int region;
+    std::size_t member = 0;
+    int branches_opened = 0;
   };
-  emit(0);
+  std::vector<Frame> stack{{0}};
+  while (!stack.empty()) {
+    Frame& frame = stack.back();
+    if (frame.member == members[frame.region].size()) {
+      stack.pop_back();
+      if (stack.empty()) break;
+      const Frame& parent = stack.back();
+      schedule.push_back({-2, members[parent.region][parent.member], parent.branches_opened == 2});
+      continue;
+    }
+    const int v = members[frame.region][frame.member];
+    if (is_if(ir.code[v]) && frame.branches_opened < 2) {
+      const bool else_branch = frame.branches_opened++ == 1;
+      const int branch = else_branch ? else_region[v] : then_region[v];
+      if (!members[branch].empty()) {
+        schedule.push_back({-1, v, else_branch});
+        stack.push_back({branch});
+      }
+      continue;
+    }
+    schedule.push_back({v});
+    ++frame.member;
+    frame.branches_opened = 0;
+  }
 
   std::vector<std::int32_t> new_index(count, -1);
   for (std::size_t s = 0; s < schedule.size(); ++s)
