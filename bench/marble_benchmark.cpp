@@ -19,7 +19,7 @@ namespace {
 constexpr int side = 256;
 
 struct MarbleSamples {
-  std::vector<float> planes[kernel_input_plane_count];
+  InputBuffers input{side * side};
   std::vector<float> rgb[3];
   LoadedGraph graph;
 
@@ -27,23 +27,21 @@ struct MarbleSamples {
     graph = *load_and_compile(SHADETREE_SOURCE_DIR "/graphs/marble.json", {});
     TextureView view = TextureView::from_settings(graph.graph->render);
     view.width = view.height = side;
-    for (auto& plane : planes) plane.resize(side * side);
     for (auto& plane : rgb) plane.resize(side * side);
     for (int row = 0; row < side; ++row)
       for (int column = 0; column < side; ++column) {
         const TextureSample sample = texture_sample_at_pixel(view, column, row);
         const std::size_t i = static_cast<std::size_t>(row) * side + column;
-        for (int c = 0; c < 3; ++c) planes[c][i] = sample.P[c];
-        planes[8][i] = sample.filter_width;
+        input.plane(InputPlane::P_x)[i] = sample.P[0];
+        input.plane(InputPlane::P_y)[i] = sample.P[1];
+        input.plane(InputPlane::P_z)[i] = sample.P[2];
+        input.plane(InputPlane::filter_width)[i] = sample.filter_width;
       }
   }
 
   void run(const Kernel& kernel) {
-    KernelInputs inputs;
-    for (int c = 0; c < 3; ++c) inputs.P[c] = planes[c].data();
-    inputs.filter_width = planes[8].data();
     float* outputs[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
-    kernel.run(graph.params.data(), inputs, outputs, side * side);
+    kernel.run(graph.params.data(), input.inputs(), outputs, side * side);
   }
 };
 
@@ -71,8 +69,9 @@ void marble_jit(benchmark::State& state) {
 void marble_yardstick(benchmark::State& state) {
   MarbleSamples& s = samples();
   for (auto _ : state)
-    yardstick::marble(s.planes[0].data(), s.planes[1].data(), s.planes[2].data(), s.planes[8].data(),
-                      s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(), side * side);
+    yardstick::marble(s.input.plane(InputPlane::P_x), s.input.plane(InputPlane::P_y), s.input.plane(InputPlane::P_z),
+                      s.input.plane(InputPlane::filter_width), s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(),
+                      side * side);
   state.SetItemsProcessed(state.iterations() * side * side);
 }
 

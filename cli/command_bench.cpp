@@ -34,24 +34,26 @@ struct BenchArguments {
 
 struct Samples {
   std::size_t count = 0;
-  std::vector<float> planes[kernel_input_plane_count];
+  InputBuffers input{0};
   std::size_t output_planes = 0;
 };
 
 Samples make_samples(const TextureView& view, const ShadeIR& ir) {
   Samples samples;
   samples.count = static_cast<std::size_t>(view.width) * view.height;
-  for (auto& plane : samples.planes) plane.resize(samples.count);
+  samples.input = InputBuffers(samples.count);
   for (int row = 0; row < view.height; ++row)
     for (int column = 0; column < view.width; ++column) {
       const std::size_t i = static_cast<std::size_t>(row) * view.width + column;
       const TextureSample sample = texture_sample_at_pixel(view, column, row);
-      for (int c = 0; c < 3; ++c) samples.planes[c][i] = sample.P[c];
-      samples.planes[5][i] = 1.0f;
-      samples.planes[6][i] = sample.uv[0];
-      samples.planes[7][i] = sample.uv[1];
-      samples.planes[8][i] = sample.filter_width;
-      samples.planes[9][i] = 0.5f;
+      samples.input.plane(InputPlane::P_x)[i] = sample.P[0];
+      samples.input.plane(InputPlane::P_y)[i] = sample.P[1];
+      samples.input.plane(InputPlane::P_z)[i] = sample.P[2];
+      samples.input.plane(InputPlane::N_z)[i] = 1.0f;
+      samples.input.plane(InputPlane::u)[i] = sample.uv[0];
+      samples.input.plane(InputPlane::v)[i] = sample.uv[1];
+      samples.input.plane(InputPlane::filter_width)[i] = sample.filter_width;
+      samples.input.plane(InputPlane::density)[i] = 0.5f;
     }
   for (const IrOutput& output : ir.outputs) samples.output_planes += static_cast<std::size_t>(component_count(output.type));
   return samples;
@@ -69,15 +71,7 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Sam
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), (samples.count + chunk - 1) / chunk, [&](std::size_t c) {
         const std::size_t start = c * chunk, count = std::min(chunk, samples.count - start);
-        KernelInputs inputs;
-        for (int k = 0; k < 3; ++k) {
-          inputs.P[k] = samples.planes[k].data() + start;
-          inputs.N[k] = samples.planes[3 + k].data() + start;
-        }
-        inputs.uv[0] = samples.planes[6].data() + start;
-        inputs.uv[1] = samples.planes[7].data() + start;
-        inputs.filter_width = samples.planes[8].data() + start;
-        inputs.density = samples.planes[9].data() + start;
+        const KernelInputs inputs = samples.input.inputs().advanced(start);
         std::vector<float*> shifted;
         for (float* plane : outputs) shifted.push_back(plane + start);
         kernel.run(params.data(), inputs, shifted.data(), count);

@@ -36,19 +36,12 @@ ExitStatus evaluate(const EvalArguments& arguments) {
   const TextureView& view = *view_or_error;
   const TextureSample sample = texture_sample_at_point(view, at->data());
 
-  float planes[10] = {sample.P[0], sample.P[1], sample.P[2], (*normal)[0], (*normal)[1], (*normal)[2],
-                      sample.uv[0], sample.uv[1], sample.filter_width, arguments.density};
-  KernelInputs inputs;
-  for (int c = 0; c < 3; ++c) {
-    inputs.P[c] = &planes[c];
-    inputs.N[c] = &planes[3 + c];
-  }
-  inputs.uv[0] = &planes[6];
-  inputs.uv[1] = &planes[7];
-  inputs.filter_width = &planes[8];
-  inputs.density = &planes[9];
-  inputs.frame = view.frame;
-  inputs.time = view.frame / frames_per_second;
+  InputBuffers input(1);
+  const float sample_values[input_plane_count] = {sample.P[0],  sample.P[1],  sample.P[2],         (*normal)[0], (*normal)[1],
+                                           (*normal)[2], sample.uv[0], sample.uv[1], sample.filter_width,
+                                           arguments.density};
+  for (int p = 0; p < input_plane_count; ++p) input.plane(static_cast<InputPlane>(p))[0] = sample_values[p];
+  const KernelInputs inputs = input.inputs(view.frame / frames_per_second, view.frame);
 
   const ShadeIR& ir = loaded->ir;
   std::size_t plane_count = 0;

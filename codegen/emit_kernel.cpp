@@ -28,14 +28,14 @@
 namespace shadetree {
 namespace {
 
-// Input planes in the kernel's input_planes array.
+// The first of an input op's planes in the kernel's input_planes array.
 int input_plane(OpId op) {
   switch (op) {
-    case OpId::P: return 0;
-    case OpId::N: return 3;
-    case OpId::uv: return 6;
-    case OpId::filter_width: return 8;
-    case OpId::density: return 9;
+    case OpId::P: return static_cast<int>(InputPlane::P_x);
+    case OpId::N: return static_cast<int>(InputPlane::N_x);
+    case OpId::uv: return static_cast<int>(InputPlane::u);
+    case OpId::filter_width: return static_cast<int>(InputPlane::filter_width);
+    case OpId::density: return static_cast<int>(InputPlane::density);
     default: return -1;
   }
 }

@@ -6,7 +6,7 @@
 //               float time, float frame, float* const* output_planes,
 //               int64_t count)
 //
-// input_planes: P.x P.y P.z N.x N.y N.z uv.x uv.y filter_width density.
+// input_planes: the InputPlane order of graph/kernel.h.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "graph/diagnostic.h"
+#include "graph/kernel.h"
 #include "graph/shade_ir.h"
 
 namespace llvm {
@@ -22,8 +23,6 @@ class Module;
 }  // namespace llvm
 
 namespace shadetree {
-
-inline constexpr int kernel_input_plane_count = 10;
 
 using KernelFunction = void (*)(const float* params, const float* const* input_planes, float time, float frame,
                                 float* const* output_planes, std::int64_t count);

@@ -1,5 +1,7 @@
 #include "graph/shade_ir.h"
 
+#include <algorithm>
+
 #include <sstream>
 
 #include "nodes/registry.h"
@@ -74,6 +76,26 @@ KernelInputs KernelInputs::advanced(std::size_t offset) const {
   shift(result.filter_width);
   shift(result.density);
   return result;
+}
+
+void KernelInputs::planes(const float* out[input_plane_count]) const {
+  const float* all[input_plane_count] = {P[0], P[1], P[2], N[0], N[1], N[2], uv[0], uv[1], filter_width, density};
+  std::copy(all, all + input_plane_count, out);
+}
+
+KernelInputs InputBuffers::inputs(float time, float frame) const {
+  KernelInputs in;
+  for (int c = 0; c < 3; ++c) {
+    in.P[c] = plane(static_cast<InputPlane>(static_cast<int>(InputPlane::P_x) + c));
+    in.N[c] = plane(static_cast<InputPlane>(static_cast<int>(InputPlane::N_x) + c));
+  }
+  in.uv[0] = plane(InputPlane::u);
+  in.uv[1] = plane(InputPlane::v);
+  in.filter_width = plane(InputPlane::filter_width);
+  in.density = plane(InputPlane::density);
+  in.time = time;
+  in.frame = frame;
+  return in;
 }
 
 InputUsage input_usage(const ShadeIR& ir) {

@@ -21,17 +21,16 @@ class JitKernel final : public Kernel {
   void run(const float* params, const KernelInputs& inputs, float* const* outputs, std::size_t count) const override {
     const std::size_t width = static_cast<std::size_t>(compiled_.width);
     const std::size_t full = count / width * width;
-    const float* planes[kernel_input_plane_count] = {inputs.P[0], inputs.P[1], inputs.P[2], inputs.N[0],
-                                                     inputs.N[1], inputs.N[2], inputs.uv[0], inputs.uv[1],
-                                                     inputs.filter_width, inputs.density};
+    const float* planes[input_plane_count];
+    inputs.planes(planes);
     if (full > 0)
       compiled_.function(params, planes, inputs.time, inputs.frame, outputs, static_cast<std::int64_t>(full));
     const std::size_t tail = count - full;
     if (tail == 0) return;
     // Padded copies: unused inputs stay null, the padding lanes read zeros.
-    std::vector<float> scratch((kernel_input_plane_count + output_planes_) * width, 0.0f);
-    const float* tail_planes[kernel_input_plane_count];
-    for (int p = 0; p < kernel_input_plane_count; ++p) {
+    std::vector<float> scratch((input_plane_count + output_planes_) * width, 0.0f);
+    const float* tail_planes[input_plane_count];
+    for (int p = 0; p < input_plane_count; ++p) {
       tail_planes[p] = nullptr;
       if (!planes[p]) continue;
       float* copy = scratch.data() + p * width;
@@ -40,7 +39,7 @@ class JitKernel final : public Kernel {
     }
     std::vector<float*> tail_outputs(output_planes_);
     for (std::size_t p = 0; p < output_planes_; ++p)
-      tail_outputs[p] = scratch.data() + (kernel_input_plane_count + p) * width;
+      tail_outputs[p] = scratch.data() + (input_plane_count + p) * width;
     compiled_.function(params, tail_planes, inputs.time, inputs.frame, tail_outputs.data(),
                        static_cast<std::int64_t>(width));
     for (std::size_t p = 0; p < output_planes_; ++p)

@@ -93,43 +93,33 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
     const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
     const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
     const std::size_t count = static_cast<std::size_t>(w) * h;
-    // Planes: P xyz, N xyz, uv, filter_width, density, then the outputs.
-    std::vector<float> buffer(count * (10 + static_cast<std::size_t>(total_planes)));
-    auto plane = [&](int index) { return buffer.data() + count * static_cast<std::size_t>(index); };
+    InputBuffers input(count);
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         const TextureSample sample = texture_sample_at_pixel(view, x0 + x, y0 + y);
-        for (int c = 0; c < 3; ++c) plane(c)[i] = sample.P[c];
-        plane(5)[i] = 1.0f;  // N = +z, facing the viewer
-        plane(6)[i] = sample.uv[0];
-        plane(7)[i] = sample.uv[1];
-        plane(8)[i] = sample.filter_width;
+        input.plane(InputPlane::P_x)[i] = sample.P[0];
+        input.plane(InputPlane::P_y)[i] = sample.P[1];
+        input.plane(InputPlane::P_z)[i] = sample.P[2];
+        input.plane(InputPlane::N_z)[i] = 1.0f;  // N = +z, facing the viewer
+        input.plane(InputPlane::u)[i] = sample.uv[0];
+        input.plane(InputPlane::v)[i] = sample.uv[1];
+        input.plane(InputPlane::filter_width)[i] = sample.filter_width;
       }
     }
-    KernelInputs inputs;
-    for (int c = 0; c < 3; ++c) {
-      inputs.P[c] = plane(c);
-      inputs.N[c] = plane(3 + c);
-    }
-    inputs.uv[0] = plane(6);
-    inputs.uv[1] = plane(7);
-    inputs.filter_width = plane(8);
-    inputs.density = plane(9);
-    inputs.frame = view.frame;
-    inputs.time = view.frame / frames_per_second;
+    std::vector<float> output_storage(count * static_cast<std::size_t>(total_planes));
     std::vector<float*> outputs;
-    for (int p = 0; p < total_planes; ++p) outputs.push_back(plane(10 + p));
-    kernel.run(params.data(), inputs, outputs.data(), count);
+    for (int p = 0; p < total_planes; ++p) outputs.push_back(output_storage.data() + count * static_cast<std::size_t>(p));
+    kernel.run(params.data(), input.inputs(view.frame / frames_per_second, view.frame), outputs.data(), count);
 
-    const int color_plane = 10 + first_plane(ir, color);
+    const int color_plane = first_plane(ir, color);
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         float* pixel = image.pixels.data() +
                        (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
-        for (int c = 0; c < 3; ++c) pixel[c] = plane(color_plane + std::min(c, color_components - 1))[i];
-        if (alpha >= 0) pixel[3] = plane(10 + first_plane(ir, alpha))[i];
+        for (int c = 0; c < 3; ++c) pixel[c] = outputs[color_plane + std::min(c, color_components - 1)][i];
+        if (alpha >= 0) pixel[3] = outputs[first_plane(ir, alpha)][i];
       }
     }
     const int done = ++tiles_done;

@@ -23,12 +23,11 @@ namespace {
 // vector width.
 struct SampleSet {
   static constexpr std::size_t count = 517;
-  std::vector<float> planes[kernel_input_plane_count];
+  InputBuffers input{count};
 
   SampleSet() {
     std::mt19937 random(1989);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-    for (auto& plane : planes) plane.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
       float p[3];
       switch (i % 5) {
@@ -44,31 +43,19 @@ struct SampleSet {
         default:
           for (float& c : p) c = unit(random) * 3.0f;
       }
-      for (int c = 0; c < 3; ++c) planes[c][i] = p[c];
       const float n[3] = {unit(random), unit(random), unit(random) + 2.0f};
       const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      for (int c = 0; c < 3; ++c) planes[3 + c][i] = n[c] / length;
-      planes[6][i] = (unit(random) + 1.0f) / 2.0f;
-      planes[7][i] = (unit(random) + 1.0f) / 2.0f;
       const float widths[] = {0.0f, 0.001f, 0.01f, 0.1f, 0.7f};
-      planes[8][i] = widths[i % 5];
-      planes[9][i] = (unit(random) + 1.0f) / 2.0f;
+      const float values[input_plane_count] = {p[0], p[1], p[2], n[0] / length, n[1] / length, n[2] / length,
+                                               (unit(random) + 1.0f) / 2.0f, (unit(random) + 1.0f) / 2.0f,
+                                               widths[i % 5], (unit(random) + 1.0f) / 2.0f};
+      for (int plane = 0; plane < input_plane_count; ++plane) input.plane(static_cast<InputPlane>(plane))[i] = values[plane];
     }
   }
 
-  KernelInputs inputs() const {
-    KernelInputs in;
-    for (int c = 0; c < 3; ++c) {
-      in.P[c] = planes[c].data();
-      in.N[c] = planes[3 + c].data();
-    }
-    in.uv[0] = planes[6].data();
-    in.uv[1] = planes[7].data();
-    in.filter_width = planes[8].data();
-    in.density = planes[9].data();
-    in.time = 0.75f;
-    in.frame = 18.0f;
-    return in;
+  KernelInputs inputs() const { return input.inputs(0.75f, 18.0f); }
+  float P(int component, std::size_t i) const {
+    return input.plane(static_cast<InputPlane>(static_cast<int>(InputPlane::P_x) + component))[i];
   }
 };
 
@@ -107,7 +94,7 @@ std::string compare_backends(const std::string& name, const ShadeIR& ir, const s
         std::ostringstream message;
         message.precision(9);
         message << name << " (width " << width << "): output plane " << plane << " sample " << i << " at P = ("
-                << samples().planes[0][i] << ", " << samples().planes[1][i] << ", " << samples().planes[2][i]
+                << samples().P(0, i) << ", " << samples().P(1, i) << ", " << samples().P(2, i)
                 << "): interp " << reference[plane][i] << ", jit " << compiled[plane][i];
         return message.str();
       }

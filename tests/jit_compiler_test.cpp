@@ -68,7 +68,7 @@ TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
   // The same machine code gives different values for different params.
   float px[8] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f}, zero[8] = {};
   float red[2][8], green[8], blue[8];
-  const float* inputs[kernel_input_plane_count] = {px, px, zero};
+  const float* inputs[input_plane_count] = {px, px, zero};
   for (int run = 0; run < 2; ++run) {
     float* outputs[3] = {red[run], green, blue};
     const std::vector<float>& params = run == 0 ? loaded->params : retuned->params;
