@@ -113,13 +113,14 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
     kernel.run(params.data(), input.inputs(view.frame / frames_per_second, view.frame), outputs.data(), count);
 
     const int color_plane = first_plane(ir, color);
+    const int alpha_plane = alpha >= 0 ? first_plane(ir, alpha) : -1;
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         float* pixel = image.pixels.data() +
                        (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
         for (int c = 0; c < 3; ++c) pixel[c] = outputs[color_plane + std::min(c, color_components - 1)][i];
-        if (alpha >= 0) pixel[3] = outputs[first_plane(ir, alpha)][i];
+        if (alpha_plane >= 0) pixel[3] = outputs[alpha_plane][i];
       }
     }
     const int done = ++tiles_done;
