@@ -5,7 +5,7 @@
 // to get medians.
 #include <benchmark/benchmark.h>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "bench/marble_yardstick.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "render/texture_driver.h"

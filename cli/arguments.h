@@ -10,7 +10,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {

@@ -15,7 +15,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "render/texture_driver.h"

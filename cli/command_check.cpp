@@ -5,7 +5,7 @@
 
 #include "cli/commands.h"
 #include "cli/arguments.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 
 namespace shadetree {
 

@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "jit/jit_compiler.h"
 
 namespace shadetree {

@@ -7,7 +7,7 @@
 
 #include "cli/commands.h"
 #include "cli/arguments.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 

@@ -6,7 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/arguments.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "render/image_output.h"
 #include "render/progress.h"
 #include "render/texture_driver.h"

@@ -6,7 +6,7 @@
 //               float time, float frame, float* const* output_planes,
 //               int64_t count)
 //
-// input_planes: the InputPlane order of graph/kernel.h.
+// input_planes: the InputPlane order of ir/kernel.h.
 #pragma once
 
 #include <cstdint>
@@ -14,8 +14,8 @@
 #include <string>
 
 #include "graph/diagnostic.h"
-#include "graph/kernel.h"
-#include "graph/shade_ir.h"
+#include "ir/kernel.h"
+#include "ir/shade_ir.h"
 
 namespace llvm {
 class LLVMContext;

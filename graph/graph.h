@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "graph/type.h"
+#include "nodes/type.h"
 
 namespace shadetree {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 #include "nodes/noise_tables.h"
 
 namespace shadetree::interp {

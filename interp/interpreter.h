@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 
 namespace shadetree {
 
@@ -17,7 +17,7 @@ inline constexpr int interpreter_block_size = 256;
 std::unique_ptr<Kernel> make_interpreted_kernel(ShadeIR ir);
 
 // Runs a program that reads no inputs for one sample; returns its output
-// planes in order. The evaluator of constant folding (graph/optimize.h).
+// planes in order. The evaluator of constant folding (ir/optimize.h).
 std::vector<float> evaluate_constant_program(const ShadeIR& program);
 
 }  // namespace shadetree

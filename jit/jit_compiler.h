@@ -12,7 +12,7 @@
 
 #include "codegen/emit_kernel.h"
 #include "graph/diagnostic.h"
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 #include "jit/jit_compiler.h"
 
 namespace shadetree {

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "graph/type.h"
+#include "nodes/type.h"
 #include "nodes/limits.h"
 #include "nodes/op_id.h"
 

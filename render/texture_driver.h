@@ -7,7 +7,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 
 namespace shadetree {
 

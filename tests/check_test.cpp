@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "graph/check.h"
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "graph/parse.h"
 #include "support/graph_text.h"
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <sstream>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "support/gallery.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"

@@ -2,7 +2,7 @@
 // including those that functions repeat when inlined twice.
 #include <gtest/gtest.h>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "nodes/registry.h"
 #include "support/graph_text.h"
 

@@ -2,7 +2,7 @@
 // as the interpreter computes them, and leaves params and inputs alone.
 #include <gtest/gtest.h>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "nodes/noise_tables.h"
 #include "nodes/semantics/arithmetic.h"
 #include "nodes/semantics/noise.h"

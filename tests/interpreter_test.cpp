@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "nodes/semantics/noise.h"
 #include "support/graph_text.h"

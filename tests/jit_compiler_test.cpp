@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
 #include "support/graph_text.h"

@@ -1,7 +1,7 @@
 // The if node's branches land in regions that run only where they are taken.
 #include <gtest/gtest.h>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "support/graph_text.h"
 
 namespace shadetree {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 #include "support/gallery.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"

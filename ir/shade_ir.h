@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "graph/type.h"
+#include "nodes/type.h"
 #include "nodes/op_id.h"
 
 namespace shadetree {

@@ -1,9 +1,9 @@
-#include "graph/optimize.h"
+#include "ir/optimize.h"
 
-#include "graph/passes/eliminate_common_subexpressions.h"
-#include "graph/passes/eliminate_dead_code.h"
-#include "graph/passes/fold_constants.h"
-#include "graph/passes/place_conditional_regions.h"
+#include "ir/passes/eliminate_common_subexpressions.h"
+#include "ir/passes/eliminate_dead_code.h"
+#include "ir/passes/fold_constants.h"
+#include "ir/passes/place_conditional_regions.h"
 
 namespace shadetree {
 

@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 

@@ -6,7 +6,7 @@
 // ones are redirected to the first, and dead code elimination then drops
 // them. Arguments are renumbered before each instruction is keyed, so
 // chains of duplicates collapse in one forward sweep.
-#include "graph/passes/eliminate_common_subexpressions.h"
+#include "ir/passes/eliminate_common_subexpressions.h"
 
 #include <cstring>
 #include <map>

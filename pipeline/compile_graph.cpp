@@ -1,8 +1,8 @@
-#include "graph/compile_graph.h"
+#include "pipeline/compile_graph.h"
 
 #include "graph/check.h"
-#include "graph/lower.h"
-#include "graph/optimize.h"
+#include "ir/lower.h"
+#include "ir/optimize.h"
 #include "interp/interpreter.h"
 #include "graph/parse.h"
 

@@ -1,4 +1,4 @@
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 #include <algorithm>
 
@@ -61,7 +61,7 @@ std::string format_shade_ir(const ShadeIR& ir) {
 
 }  // namespace shadetree
 
-#include "graph/kernel.h"
+#include "ir/kernel.h"
 
 namespace shadetree {
 

@@ -7,7 +7,7 @@
 // region. Uniform values stay outside all regions: they are computed once
 // per call anyway. Regions are then scheduled as contiguous blocks,
 // bracketed by begin_region / end_region, right before their `if`.
-#include "graph/passes/place_conditional_regions.h"
+#include "ir/passes/place_conditional_regions.h"
 
 
 namespace shadetree {

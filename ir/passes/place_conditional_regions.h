@@ -1,6 +1,6 @@
 #pragma once
 
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 

@@ -6,7 +6,7 @@
 // folds whole constant chains, since each folded op is a constant for its
 // users. Params and time/frame are uniform but not constant: those values
 // are hoisted out of the sample loop by the backends instead.
-#include "graph/passes/fold_constants.h"
+#include "ir/passes/fold_constants.h"
 
 #include "nodes/registry.h"
 

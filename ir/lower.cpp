@@ -1,5 +1,5 @@
 // Stage 3 of the pipeline: CheckedGraph -> ShadeIR (see lower.h).
-#include "graph/lower.h"
+#include "ir/lower.h"
 
 #include <map>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "graph/optimize.h"
+#include "ir/optimize.h"
 
 namespace shadetree {
 

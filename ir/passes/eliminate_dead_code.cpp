@@ -1,7 +1,7 @@
 // Dead code elimination: a node nothing reads costs every sample, so it is
 // dropped before any backend sees it. One backward sweep suffices because
 // arguments always precede their users.
-#include "graph/passes/eliminate_dead_code.h"
+#include "ir/passes/eliminate_dead_code.h"
 
 namespace shadetree {
 

@@ -8,7 +8,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 

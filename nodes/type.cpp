@@ -1,4 +1,4 @@
-#include "graph/type.h"
+#include "nodes/type.h"
 
 namespace shadetree {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 

@@ -1,12 +1,12 @@
 // Stage 3: CheckedGraph -> ShadeIR. Inlines user-defined functions, turns
 // implicit conversions into component reads, lays out params in a uniform
 // block and marks uniform values. The result is one instruction per node
-// use, unoptimized: graph/optimize.h comes next.
+// use, unoptimized: ir/optimize.h comes next.
 #pragma once
 
 #include "graph/check.h"
 #include "graph/diagnostic.h"
-#include "graph/shade_ir.h"
+#include "ir/shade_ir.h"
 
 namespace shadetree {
 
