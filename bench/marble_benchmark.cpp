@@ -19,7 +19,8 @@ namespace {
 constexpr int side = 256;
 
 struct MarbleSamples {
-  InputBuffers input{side * side};
+  SampleBuffers input{side * side, GlobalSet().set(static_cast<std::size_t>(GlobalId::P)).set(
+                                     static_cast<std::size_t>(GlobalId::filter_width))};
   std::vector<float> rgb[3];
   LoadedGraph graph;
 
@@ -32,16 +33,14 @@ struct MarbleSamples {
       for (int column = 0; column < side; ++column) {
         const TextureSample sample = texture_sample_at_pixel(view, column, row);
         const std::size_t i = static_cast<std::size_t>(row) * side + column;
-        input.plane(InputPlane::P_x)[i] = sample.P[0];
-        input.plane(InputPlane::P_y)[i] = sample.P[1];
-        input.plane(InputPlane::P_z)[i] = sample.P[2];
-        input.plane(InputPlane::filter_width)[i] = sample.filter_width;
+        store_texture_sample(input, i, sample);
       }
   }
 
-  void run(const Kernel& kernel) {
-    float* outputs[3] = {rgb[0].data(), rgb[1].data(), rgb[2].data()};
-    kernel.run(graph.params.data(), input.inputs(), outputs, side * side);
+  // One binding, as a driver keeps per thread, run on every iteration.
+  void run(BoundKernel& kernel) {
+    float* outputs[4] = {rgb[0].data(), rgb[1].data(), rgb[2].data(), nullptr};
+    kernel.run(input.inputs(), outputs, side * side);
   }
 };
 
@@ -52,7 +51,8 @@ MarbleSamples& samples() {
 
 void marble_interpreter(benchmark::State& state) {
   auto kernel = make_interpreted_kernel(samples().graph.ir);
-  for (auto _ : state) samples().run(*kernel);
+  auto bound = kernel->bind(samples().graph.params.data(), UniformInputs{});
+  for (auto _ : state) samples().run(*bound);
   state.SetItemsProcessed(state.iterations() * side * side);
 }
 
@@ -62,15 +62,16 @@ void marble_jit(benchmark::State& state) {
     state.SkipWithError(kernel.error().to_string().c_str());
     return;
   }
-  for (auto _ : state) samples().run(**kernel);
+  auto bound = (*kernel)->bind(samples().graph.params.data(), UniformInputs{});
+  for (auto _ : state) samples().run(*bound);
   state.SetItemsProcessed(state.iterations() * side * side);
 }
 
 void marble_yardstick(benchmark::State& state) {
   MarbleSamples& s = samples();
   for (auto _ : state)
-    yardstick::marble(s.input.plane(InputPlane::P_x), s.input.plane(InputPlane::P_y), s.input.plane(InputPlane::P_z),
-                      s.input.plane(InputPlane::filter_width), s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(),
+    yardstick::marble(s.input.plane(GlobalId::P, 0), s.input.plane(GlobalId::P, 1), s.input.plane(GlobalId::P, 2),
+                      s.input.plane(GlobalId::filter_width), s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(),
                       side * side);
   state.SetItemsProcessed(state.iterations() * side * side);
 }

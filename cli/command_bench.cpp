@@ -19,6 +19,7 @@
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "render/texture_driver.h"
+#include "render/thread_bindings.h"
 
 namespace shadetree {
 
@@ -34,47 +35,41 @@ struct BenchArguments {
 
 struct Samples {
   std::size_t count = 0;
-  InputBuffers input{0};
+  SampleBuffers input{0, {}};
   std::size_t output_planes = 0;
 };
 
-Samples make_samples(const TextureView& view, const ShadeIR& ir) {
+Samples make_samples(const TextureView& view, const Kernel& kernel) {
   Samples samples;
   samples.count = static_cast<std::size_t>(view.width) * view.height;
-  samples.input = InputBuffers(samples.count);
+  samples.input = SampleBuffers(samples.count, kernel.reads());
   for (int row = 0; row < view.height; ++row)
-    for (int column = 0; column < view.width; ++column) {
-      const std::size_t i = static_cast<std::size_t>(row) * view.width + column;
-      const TextureSample sample = texture_sample_at_pixel(view, column, row);
-      samples.input.plane(InputPlane::P_x)[i] = sample.P[0];
-      samples.input.plane(InputPlane::P_y)[i] = sample.P[1];
-      samples.input.plane(InputPlane::P_z)[i] = sample.P[2];
-      samples.input.plane(InputPlane::N_z)[i] = 1.0f;
-      samples.input.plane(InputPlane::u)[i] = sample.uv[0];
-      samples.input.plane(InputPlane::v)[i] = sample.uv[1];
-      samples.input.plane(InputPlane::filter_width)[i] = sample.filter_width;
-      samples.input.plane(InputPlane::density)[i] = 0.5f;
-    }
-  for (const IrOutput& output : ir.outputs) samples.output_planes += static_cast<std::size_t>(component_count(output.type));
+    for (int column = 0; column < view.width; ++column)
+      store_texture_sample(samples.input, static_cast<std::size_t>(row) * view.width + column,
+                           texture_sample_at_pixel(view, column, row));
+  samples.output_planes = static_cast<std::size_t>(kernel.outputs().plane_count);
   return samples;
 }
 
 // Median samples per second of `repetitions` runs after one warm-up run.
-double measure(const Kernel& kernel, const std::vector<float>& params, const Samples& samples, int threads,
-               int repetitions) {
+double measure(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
+               const Samples& samples, int threads, int repetitions) {
   constexpr std::size_t chunk = 4096;
   std::vector<float> output_storage(samples.output_planes * samples.count);
   std::vector<float*> outputs;
   for (std::size_t p = 0; p < samples.output_planes; ++p) outputs.push_back(output_storage.data() + p * samples.count);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   auto run_once = [&] {
+    ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), (samples.count + chunk - 1) / chunk, [&](std::size_t c) {
         const std::size_t start = c * chunk, count = std::min(chunk, samples.count - start);
-        const KernelInputs inputs = samples.input.inputs().advanced(start);
+        SampleInputs inputs = samples.input.inputs();
+        for (const float*& plane : inputs.planes)
+          if (plane) plane += start;
         std::vector<float*> shifted;
         for (float* plane : outputs) shifted.push_back(plane + start);
-        kernel.run(params.data(), inputs, shifted.data(), count);
+        bindings.local().run(inputs, shifted.data(), count);
       });
     });
   };
@@ -107,8 +102,6 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (!loaded) return report(loaded.error());
     auto view = texture_view(*loaded->graph, arguments.size, std::nullopt);
     if (!view) return report(view.error());
-    const Samples samples = make_samples(*view, loaded->ir);
-
     JitSettings settings{false, {}, false, std::nullopt};
     if (arguments.gathers == "hardware") settings.gathers = GatherStrategy::hardware;
     if (arguments.gathers == "per-lane") settings.gathers = GatherStrategy::per_lane;
@@ -123,12 +116,13 @@ ExitStatus bench(const BenchArguments& arguments) {
     Result<CompiledKernel> cached = compile_kernel(loaded->ir, 0, settings);
     if (!cached) return report(cached.error());
     auto interp = make_interpreted_kernel(loaded->ir);
+    const Samples samples = make_samples(*view, *interp);
 
     const int all = arguments.threads;
-    const double interp_1t = measure(*interp, loaded->params, samples, 1, arguments.repetitions);
-    const double interp_mt = measure(*interp, loaded->params, samples, all, arguments.repetitions);
-    const double jit_1t = measure(**jit, loaded->params, samples, 1, arguments.repetitions);
-    const double jit_mt = measure(**jit, loaded->params, samples, all, arguments.repetitions);
+    const double interp_1t = measure(*interp, loaded->params, *view, samples, 1, arguments.repetitions);
+    const double interp_mt = measure(*interp, loaded->params, *view, samples, all, arguments.repetitions);
+    const double jit_1t = measure(**jit, loaded->params, *view, samples, 1, arguments.repetitions);
+    const double jit_mt = measure(**jit, loaded->params, *view, samples, all, arguments.repetitions);
     const std::string name = loaded->graph->name;
     if (arguments.json) {
       results.push_back({{"graph", name},

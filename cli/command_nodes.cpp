@@ -88,7 +88,7 @@ void print_markdown() {
         std::printf("| `%s` | %s | %s |\n", attribute.name.c_str(), attribute.required ? "yes" : "no",
                     attribute.doc.c_str());
     }
-    if (!op.kinds.empty()) std::printf("\nOnly in %s graphs.\n", op.kinds[0].c_str());
+    if (!op.kinds.all()) std::printf("\nOnly in %s graphs.\n", kind_set_names(op.kinds).c_str());
   }
 }
 }  // namespace

@@ -31,9 +31,10 @@ ExitStatus render(const RenderArguments& arguments) {
   // Refuse an output we cannot write before spending time on the render.
   Status writable = check_image_path(arguments.output);
   if (!writable) return report(writable.error());
-  if (loaded->graph->kind != "texture")
+  if (loaded->graph->kind != GraphKind::texture)
     return report({ExitStatus::invalid_input, arguments.file, {}, {},
-                   "render supports texture graphs for now; this is a " + loaded->graph->kind + " graph"});
+                   "render supports texture graphs for now; this is a " +
+                       std::string(graph_kind_name(loaded->graph->kind)) + " graph"});
   Result<TextureView> view_or_error = texture_view(*loaded->graph, arguments.size, arguments.frame);
   if (!view_or_error) return report(view_or_error.error());
   const TextureView& view = *view_or_error;

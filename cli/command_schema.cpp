@@ -79,7 +79,7 @@ json graph_schema() {
         {"frame", {{"type", "number"}}}}},
       {"additionalProperties", false}};
   json kinds = json::array();
-  for (const char* kind : graph_kinds) kinds.push_back(kind);
+  for (GraphKind kind : all_graph_kinds) kinds.push_back(graph_kind_name(kind));
 
   return {{"$schema", "https://json-schema.org/draft/2020-12/schema"},
           {"title", "shadetree graph"},

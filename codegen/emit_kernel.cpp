@@ -1,11 +1,15 @@
 // ShadeIR -> LLVM IR (see emit_kernel.h).
 //
 // Every ShadeIR value lives in an alloca of [components x <W x float>];
-// instructions load their arguments, call the op library (or, for pure data
-// movement, shuffle values themselves) and store their result. mem2reg and
-// SROA turn this into SSA after the op library is inlined, and conditional
-// regions need no hand-built phis. Uniform instructions are emitted once,
-// before the sample loop; varying ones inside it. A region becomes a branch
+// instructions load their arguments, call the op library through its one
+// calling convention (codegen/ops_bitcode.cpp) or, for pure data movement,
+// move values themselves, and store their result. mem2reg and SROA turn
+// this into SSA after the op library is inlined, and conditional regions
+// need no hand-built phis. Constants are emitted where they are used, so
+// the optimizer folds them into the op library's code. The other uniform
+// values are computed by the bind function and kept in the state block,
+// from which the run function loads them once, before its sample loop.
+// Varying values are computed inside the loop. A region becomes a branch
 // that skips its blocks when no active lane takes it (ISPC-style masked
 // control flow); inside, all W lanes compute and the `if` selects per lane.
 #include "codegen/emit_kernel.h"
@@ -23,66 +27,98 @@
 
 #include "codegen/op_library.h"
 #include "nodes/noise_tables.h"
+#include "nodes/op_frame.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
-namespace {
 
-// The first of an input op's planes in the kernel's input_planes array.
-int input_plane(OpId op) {
-  switch (op) {
-    case OpId::P: return static_cast<int>(InputPlane::P_x);
-    case OpId::N: return static_cast<int>(InputPlane::N_x);
-    case OpId::uv: return static_cast<int>(InputPlane::u);
-    case OpId::filter_width: return static_cast<int>(InputPlane::filter_width);
-    case OpId::density: return static_cast<int>(InputPlane::density);
-    default: return -1;
+UniformStateLayout uniform_state_layout(const ShadeIR& ir) {
+  UniformStateLayout layout;
+  layout.slots.assign(ir.code.size(), -1);
+  for (std::size_t i = 0; i < ir.code.size(); ++i) {
+    const IrInstr& instr = ir.code[i];
+    if (!instr.uniform || instr.kind == IrOpKind::constant) continue;
+    layout.slots[i] = layout.size;
+    layout.size += component_count(instr.type);
   }
+  return layout;
 }
+
+namespace {
 
 class KernelEmitter {
  public:
   KernelEmitter(const ShadeIR& ir, int width, llvm::Module& module)
-      : ir_(ir), width_(width), module_(module), context_(module.getContext()), builder_(context_) {
+      : ir_(ir),
+        width_(width),
+        module_(module),
+        context_(module.getContext()),
+        builder_(context_),
+        state_(uniform_state_layout(ir)),
+        layout_(output_layout(ir)) {
     float_ = builder_.getFloatTy();
     vector_ = llvm::FixedVectorType::get(float_, static_cast<unsigned>(width));
     ptr_ = builder_.getPtrTy();
-  }
-
-  Result<llvm::Function*> emit(const std::string& name) {
-    auto* type = llvm::FunctionType::get(builder_.getVoidTy(),
-                                         {ptr_, ptr_, float_, float_, ptr_, builder_.getInt64Ty()}, false);
-    function_ = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
-    auto args = function_->arg_begin();
-    params_ = &*args++;
-    inputs_ = &*args++;
-    time_ = &*args++;
-    frame_ = &*args++;
-    outputs_ = &*args++;
-    count_ = &*args++;
-
-    entry_ = llvm::BasicBlock::Create(context_, "entry", function_);
-    builder_.SetInsertPoint(entry_);
-    allocate_registers();
+    auto* i32 = builder_.getInt32Ty();
+    constants_type_ = llvm::StructType::get(context_, {ptr_, ptr_, i32, llvm::ArrayType::get(i32, 2), i32,
+                                                       llvm::ArrayType::get(i32, max_op_args)});
     if (!ir_.data.empty()) {
       auto* data_type = llvm::ArrayType::get(float_, ir_.data.size());
       data_ = new llvm::GlobalVariable(module_, data_type, true, llvm::GlobalValue::InternalLinkage,
                                        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(ir_.data)),
                                        "shade_data");
     }
-    // Uniform values once, before the loop.
-    for (std::size_t i = 0; i < ir_.code.size(); ++i)
-      if (ir_.code[i].uniform) {
-        Status status = emit_instruction(static_cast<int>(i), nullptr);
+  }
+
+  // void bind(const float* params, const float* uniform_globals, float* state)
+  Result<llvm::Function*> emit_bind(const std::string& name) {
+    llvm::Function* function = begin_function(name, {ptr_, ptr_, ptr_});
+    auto args = function->arg_begin();
+    params_ = &*args++;
+    uniforms_ = &*args++;
+    llvm::Value* state = &*args;
+    for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+      if (!ir_.code[i].uniform) continue;
+      Status status = emit_instruction(static_cast<int>(i));
+      if (!status) return status.error();
+      if (state_.slots[i] < 0) continue;
+      for (int c = 0; c < component_count(ir_.code[i].type); ++c)
+        builder_.CreateStore(builder_.CreateExtractElement(load(static_cast<int>(i), c), std::uint64_t{0}),
+                             builder_.CreateConstInBoundsGEP1_32(float_, state, static_cast<unsigned>(state_.slots[i] + c)));
+    }
+    builder_.CreateRetVoid();
+    return finish(function);
+  }
+
+  // void run(const float* state, const float* const* input_planes,
+  //          float* const* output_planes, int64_t count)
+  Result<llvm::Function*> emit_run(const std::string& name) {
+    llvm::Function* function = begin_function(name, {ptr_, ptr_, ptr_, builder_.getInt64Ty()});
+    auto args = function->arg_begin();
+    llvm::Value* state = &*args++;
+    inputs_ = &*args++;
+    outputs_ = &*args++;
+    llvm::Value* count = &*args;
+    for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+      const IrInstr& instr = ir_.code[i];
+      if (instr.kind == IrOpKind::constant) {
+        Status status = emit_instruction(static_cast<int>(i));
         if (!status) return status.error();
       }
+      if (state_.slots[i] < 0) continue;
+      for (int c = 0; c < component_count(instr.type); ++c)
+        store(static_cast<int>(i), c,
+              splat(builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(
+                                                    float_, state, static_cast<unsigned>(state_.slots[i] + c)))));
+    }
 
-    llvm::BasicBlock* loop = llvm::BasicBlock::Create(context_, "loop", function_);
-    llvm::BasicBlock* exit = llvm::BasicBlock::Create(context_, "exit", function_);
-    builder_.CreateCondBr(builder_.CreateICmpSGT(count_, builder_.getInt64(0)), loop, exit);
+    llvm::BasicBlock* entry = builder_.GetInsertBlock();
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(context_, "loop", function);
+    llvm::BasicBlock* exit = llvm::BasicBlock::Create(context_, "exit", function);
+    builder_.CreateCondBr(builder_.CreateICmpSGT(count, builder_.getInt64(0)), loop, exit);
     builder_.SetInsertPoint(loop);
     llvm::PHINode* index = builder_.CreatePHI(builder_.getInt64Ty(), 2, "sample");
-    index->addIncoming(builder_.getInt64(0), entry_);
+    index->addIncoming(builder_.getInt64(0), entry);
     index_ = index;
 
     llvm::Value* all_lanes = llvm::ConstantInt::getTrue(llvm::FixedVectorType::get(builder_.getInt1Ty(), width_));
@@ -98,8 +134,8 @@ class KernelEmitter {
         llvm::Value* any = builder_.CreateICmpNE(
             builder_.CreateBitCast(region_mask, builder_.getIntNTy(static_cast<unsigned>(width_))),
             builder_.getIntN(static_cast<unsigned>(width_), 0));
-        auto* body = llvm::BasicBlock::Create(context_, "region", function_);
-        auto* merge = llvm::BasicBlock::Create(context_, "after_region", function_);
+        auto* body = llvm::BasicBlock::Create(context_, "region", function);
+        auto* merge = llvm::BasicBlock::Create(context_, "after_region", function);
         builder_.CreateCondBr(any, body, merge);
         builder_.SetInsertPoint(body);
         regions.push_back({mask, merge});
@@ -113,29 +149,36 @@ class KernelEmitter {
         regions.pop_back();
         continue;
       }
-      Status status = emit_instruction(static_cast<int>(i), index_);
+      Status status = emit_instruction(static_cast<int>(i));
       if (!status) return status.error();
     }
     store_outputs();
     llvm::Value* next = builder_.CreateAdd(index_, builder_.getInt64(width_), "next_sample");
     index->addIncoming(next, builder_.GetInsertBlock());
-    builder_.CreateCondBr(builder_.CreateICmpSLT(next, count_), loop, exit);
+    builder_.CreateCondBr(builder_.CreateICmpSLT(next, count), loop, exit);
     builder_.SetInsertPoint(exit);
     builder_.CreateRetVoid();
-
-    std::string problems;
-    llvm::raw_string_ostream stream(problems);
-    if (llvm::verifyFunction(*function_, &stream)) return failure("codegen produced invalid IR: " + problems);
-    return function_;
+    return finish(function);
   }
 
  private:
-  void allocate_registers() {
-    for (const IrInstr& instr : ir_.code) {
-      const int components = component_count(instr.type);
-      registers_.push_back(
-          builder_.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(components))));
-    }
+  llvm::Function* begin_function(const std::string& name, std::vector<llvm::Type*> parameters) {
+    auto* type = llvm::FunctionType::get(builder_.getVoidTy(), parameters, false);
+    llvm::Function* function = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    entry_ = llvm::BasicBlock::Create(context_, "entry", function);
+    builder_.SetInsertPoint(entry_);
+    registers_.clear();
+    for (const IrInstr& instr : ir_.code)
+      registers_.push_back(builder_.CreateAlloca(
+          llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(component_count(instr.type)))));
+    return function;
+  }
+
+  Result<llvm::Function*> finish(llvm::Function* function) {
+    std::string problems;
+    llvm::raw_string_ostream stream(problems);
+    if (llvm::verifyFunction(*function, &stream)) return failure("codegen produced invalid IR: " + problems);
+    return function;
   }
 
   // Pointer to component c of value v, reading scalars as splatted vectors.
@@ -166,17 +209,14 @@ class KernelEmitter {
 
   llvm::Value* splat(llvm::Value* scalar) { return builder_.CreateVectorSplat(static_cast<unsigned>(width_), scalar); }
 
-  llvm::Function* library_function(const std::string& name) {
-    return module_.getFunction("st_" + name + "_w" + std::to_string(width_));
+  llvm::Constant* data_pointer(const IrInstr& instr) {
+    if (!data_ || instr.data_count == 0) return llvm::ConstantPointerNull::get(ptr_);
+    return llvm::ConstantExpr::getInBoundsGetElementPtr(
+        data_->getValueType(), data_,
+        llvm::ArrayRef<llvm::Constant*>{builder_.getInt32(0), builder_.getInt32(instr.data_offset)});
   }
 
-  llvm::Value* data_pointer(const IrInstr& instr, int offset = 0) {
-    if (!data_) return llvm::ConstantPointerNull::get(ptr_);
-    return builder_.CreateConstInBoundsGEP2_32(data_->getValueType(), data_, 0,
-                                               static_cast<unsigned>(instr.data_offset + offset));
-  }
-
-  llvm::Value* noise_tables_pointer(std::uint32_t seed) {
+  llvm::Constant* noise_tables_pointer(std::uint32_t seed) {
     auto found = tables_.find(seed);
     if (found != tables_.end()) return found->second;
     const NoiseTables& tables = noise_tables(seed);
@@ -196,26 +236,28 @@ class KernelEmitter {
     return global;
   }
 
-  Status call(const std::string& name, std::vector<llvm::Value*> arguments) {
-    llvm::Function* callee = library_function(name);
-    if (!callee) return failure("codegen: the op library has no st_" + name + " for width " + std::to_string(width_));
-    builder_.CreateCall(callee, arguments);
-    return success();
+  // The instruction's OpConstants (nodes/op_frame.h) as a constant global.
+  llvm::Value* op_constants(const IrInstr& instr) {
+    auto int_constant = [&](int value) { return builder_.getInt32(value); };
+    std::vector<llvm::Constant*> arg_components;
+    for (int a = 0; a < max_op_args; ++a)
+      arg_components.push_back(int_constant(a < instr.arg_count ? component_count(argument_type(instr, a)) : 0));
+    llvm::Constant* tables = op_def(instr.op).tables == OpTables::noise
+                                 ? noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0]))
+                                 : llvm::ConstantPointerNull::get(ptr_);
+    llvm::Constant* fields[] = {
+        data_pointer(instr),
+        tables,
+        int_constant(instr.data_count),
+        llvm::ConstantArray::get(llvm::ArrayType::get(builder_.getInt32Ty(), 2),
+                                 {int_constant(instr.immediate[0]), int_constant(instr.immediate[1])}),
+        int_constant(component_count(instr.type)),
+        llvm::ConstantArray::get(llvm::ArrayType::get(builder_.getInt32Ty(), max_op_args), arg_components)};
+    return new llvm::GlobalVariable(module_, constants_type_, true, llvm::GlobalValue::InternalLinkage,
+                                    llvm::ConstantStruct::get(constants_type_, fields), "op_constants");
   }
 
-  // out[c] = f(args[c]...) for every component of the result.
-  Status componentwise(int self, const std::string& name) {
-    const IrInstr& instr = ir_.code[self];
-    for (int c = 0; c < component_count(instr.type); ++c) {
-      std::vector<llvm::Value*> arguments{component_pointer(self, c)};
-      for (int a = 0; a < instr.arg_count; ++a) arguments.push_back(component_pointer(instr.args[a], c));
-      Status status = call(name, arguments);
-      if (!status) return status;
-    }
-    return success();
-  }
-
-  Status emit_instruction(int self, llvm::Value* index) {
+  Status emit_instruction(int self) {
     const IrInstr& instr = ir_.code[self];
     switch (instr.kind) {
       case IrOpKind::constant:
@@ -224,9 +266,22 @@ class KernelEmitter {
         return success();
       case IrOpKind::param:
         for (int c = 0; c < component_count(instr.type); ++c)
-          store(self, c, splat(builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(
-                                                               float_, params_, static_cast<unsigned>(instr.immediate[0] + c)))));
+          store(self, c, splat(load_float(params_, instr.immediate[0] + c)));
         return success();
+      case IrOpKind::global: {
+        const GlobalDef& global = global_def(static_cast<GlobalId>(instr.immediate[0]));
+        for (int c = 0; c < global.components; ++c) {
+          if (instr.uniform) {
+            store(self, c, splat(load_float(uniforms_, global.first + c)));
+            continue;
+          }
+          llvm::Value* plane = builder_.CreateLoad(
+              ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, inputs_, static_cast<unsigned>(global.first + c)));
+          llvm::Value* address = builder_.CreateInBoundsGEP(float_, plane, index_);
+          store(self, c, builder_.CreateAlignedLoad(vector_, address, llvm::Align(4)));
+        }
+        return success();
+      }
       case IrOpKind::extract:
         store(self, 0, load(instr.args[0], instr.immediate[0]));
         return success();
@@ -234,114 +289,35 @@ class KernelEmitter {
       case IrOpKind::end_region:
         return failure("codegen: a region marker outside the sample loop");
       case IrOpKind::op:
-        return emit_op(self, index);
+        return emit_op(self);
     }
     return success();
   }
 
-  Status emit_op(int self, llvm::Value* index) {
+  llvm::Value* load_float(llvm::Value* base, int index) {
+    return builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(float_, base, static_cast<unsigned>(index)));
+  }
+
+  // st_<op>_w<W>(result, a0 .. a5, constants): codegen/ops_bitcode.cpp.
+  Status emit_op(int self) {
     const IrInstr& instr = ir_.code[self];
-    const OpId op = instr.op;
-    const std::string& name = op_def(op).name;
-    auto out = [&] { return component_pointer(self, 0); };
-    auto arg = [&](int a, int components = 1) { return array_pointer(instr.args[a], components); };
-    auto int_constant = [&](int value) { return builder_.getInt32(value); };
-    switch (op) {
-      case OpId::P:
-      case OpId::N:
-      case OpId::uv:
-      case OpId::filter_width:
-      case OpId::density: {
-        const int first = input_plane(op);
-        for (int c = 0; c < component_count(instr.type); ++c) {
-          llvm::Value* plane = builder_.CreateLoad(
-              ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, inputs_, static_cast<unsigned>(first + c)));
-          llvm::Value* address = builder_.CreateInBoundsGEP(float_, plane, index);
-          store(self, c, builder_.CreateAlignedLoad(vector_, address, llvm::Align(4)));
-        }
-        return success();
-      }
-      case OpId::time: store(self, 0, splat(time_)); return success();
-      case OpId::frame: store(self, 0, splat(frame_)); return success();
-
-      case OpId::noise:
-      case OpId::dnoise:
-      case OpId::vnoise:
-        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3)});
-      case OpId::turbulence:
-        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3),
-                           arg(1), arg(2)});
-      case OpId::fbm:
-        return call(name, {out(), noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0])), arg(0, 3),
-                           arg(1), arg(2), arg(3), arg(4)});
-      case OpId::noise_improved:
-      case OpId::checker: return call(name, {out(), arg(0, 3)});
-      case OpId::sines: return call(name, {out(), arg(0, 3), arg(1), arg(2)});
-      case OpId::julia: return call(name, {out(), arg(0, 2), arg(1, 2), arg(2)});
-
-      case OpId::dot:
-      case OpId::length:
-      case OpId::normalize: {
-        const int components = component_count(ir_.code[instr.args[0]].type);
-        if (op == OpId::dot) return call(name, {out(), arg(0, components), arg(1, components), int_constant(components)});
-        return call(name, {out(), arg(0, components), int_constant(components)});
-      }
-      case OpId::cross: return call(name, {out(), arg(0, 3), arg(1, 3)});
-      case OpId::vec2:
-      case OpId::vec3:
-      case OpId::color:
-        for (int c = 0; c < component_count(instr.type); ++c) store(self, c, load(instr.args[c], 0));
-        return success();
-      case OpId::to_color:
-      case OpId::to_vec3:
-        for (int c = 0; c < 3; ++c) store(self, c, load(instr.args[0], c));
-        return success();
-      case OpId::split: return failure("codegen: split should have been lowered to extracts");
-
-      case OpId::select:
-      case OpId::if_:
-        for (int c = 0; c < component_count(instr.type); ++c) {
-          Status status = call("select", {component_pointer(self, c), component_pointer(instr.args[0], 0),
-                                          component_pointer(instr.args[1], c), component_pointer(instr.args[2], c)});
-          if (!status) return status;
-        }
-        return success();
-
-      case OpId::spline: {
-        const int components = instr.immediate[0];
-        for (int c = 0; c < components; ++c) {
-          Status status = call(name, {component_pointer(self, c), data_pointer(instr), int_constant(instr.data_count / components),
-                                      int_constant(components), int_constant(c), int_constant(instr.immediate[1]), arg(0)});
-          if (!status) return status;
-        }
-        return success();
-      }
-      case OpId::color_table: {
-        const int components = instr.immediate[0];
-        for (int c = 0; c < components; ++c) {
-          Status status = call(name, {component_pointer(self, c), data_pointer(instr), int_constant(instr.immediate[1]),
-                                      int_constant(components), int_constant(c), arg(0), arg(1)});
-          if (!status) return status;
-        }
-        return success();
-      }
-      case OpId::table1d: return call(name, {out(), data_pointer(instr), int_constant(instr.immediate[0]), arg(0)});
-      case OpId::table2d:
-        return call(name, {out(), data_pointer(instr), int_constant(instr.immediate[0]), int_constant(instr.immediate[1]),
-                           arg(0), arg(1)});
-      case OpId::sphere: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2), arg(3)});
-      case OpId::box: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2, 3), arg(3)});
-      case OpId::torus: return call(name, {out(), arg(0, 3), arg(1, 3), arg(2), arg(3), arg(4)});
-
-      default:
-        return componentwise(self, name);
-    }
+    const std::string symbol = std::string("st_") + op_symbol(instr.op) + "_w" + std::to_string(width_);
+    llvm::Function* callee = module_.getFunction(symbol);
+    if (!callee) return failure("codegen: the op library has no " + symbol);
+    std::vector<llvm::Value*> arguments{component_pointer(self, 0)};
+    for (int a = 0; a < max_op_args; ++a)
+      arguments.push_back(a < instr.arg_count
+                              ? array_pointer(instr.args[a], component_count(argument_type(instr, a)))
+                              : llvm::ConstantPointerNull::get(ptr_));
+    arguments.push_back(op_constants(instr));
+    builder_.CreateCall(callee, arguments);
+    return success();
   }
 
   void store_outputs() {
-    unsigned plane = 0;
     for (const IrOutput& output : ir_.outputs) {
-      for (int c = 0; c < component_count(output.type); ++c, ++plane) {
+      for (int c = 0; c < component_count(output.type); ++c) {
+        const unsigned plane = static_cast<unsigned>(layout_.plane(output.id, c));
         llvm::Value* base = builder_.CreateLoad(ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, outputs_, plane));
         builder_.CreateAlignedStore(load(output.value, c), builder_.CreateInBoundsGEP(float_, base, index_),
                                     llvm::Align(4));
@@ -354,16 +330,17 @@ class KernelEmitter {
   llvm::Module& module_;
   llvm::LLVMContext& context_;
   llvm::IRBuilder<> builder_;
+  UniformStateLayout state_;
+  OutputLayout layout_;
   llvm::Type* float_ = nullptr;
   llvm::FixedVectorType* vector_ = nullptr;
   llvm::PointerType* ptr_ = nullptr;
-  llvm::Function* function_ = nullptr;
+  llvm::StructType* constants_type_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
-  llvm::Value *params_ = nullptr, *inputs_ = nullptr, *time_ = nullptr, *frame_ = nullptr, *outputs_ = nullptr,
-              *count_ = nullptr, *index_ = nullptr;
+  llvm::Value *params_ = nullptr, *uniforms_ = nullptr, *inputs_ = nullptr, *outputs_ = nullptr, *index_ = nullptr;
   llvm::GlobalVariable* data_ = nullptr;
   std::vector<llvm::AllocaInst*> registers_;
-  std::map<std::uint32_t, llvm::Value*> tables_;
+  std::map<std::uint32_t, llvm::Constant*> tables_;
 };
 
 // One lookup per lane: extract the index, load, insert.
@@ -502,14 +479,17 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
     function.removeFnAttr(llvm::Attribute::OptimizeNone);
     function.addFnAttr(llvm::Attribute::AlwaysInline);
   }
-  Result<llvm::Function*> kernel = KernelEmitter(ir, width, *module).emit(function_name);
-  if (!kernel) return kernel.error();
+  KernelEmitter emitter(ir, width, *module);
+  Result<llvm::Function*> bind = emitter.emit_bind(function_name + "_bind");
+  if (!bind) return bind.error();
+  Result<llvm::Function*> run = emitter.emit_run(function_name + "_run");
+  if (!run) return run.error();
   // Drop the library functions this kernel never calls (other widths, other
   // ops) before the optimizer spends time on them.
   for (bool erased = true; erased;) {
     erased = false;
     for (llvm::Function& function : llvm::make_early_inc_range(*module)) {
-      if (&function == *kernel || !function.use_empty()) continue;
+      if (&function == *bind || &function == *run || !function.use_empty()) continue;
       function.eraseFromParent();
       erased = true;
     }

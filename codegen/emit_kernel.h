@@ -1,17 +1,22 @@
-// ShadeIR -> LLVM IR: one kernel function that evaluates the program over
-// `count` samples (a multiple of the vector width), `width` samples at a
-// time as <width x float> vectors.
+// ShadeIR -> LLVM IR: two functions per kernel, for bind once, run many
+// (ir/kernel.h):
 //
-//   void kernel(const float* params, const float* const* input_planes,
-//               float time, float frame, float* const* output_planes,
-//               int64_t count)
+//   void NAME_bind(const float* params, const float* uniform_globals,
+//                  float* state)
+//     computes every uniform value that is not a constant into `state`;
+//   void NAME_run(const float* state, const float* const* input_planes,
+//                 float* const* output_planes, int64_t count)
+//     evaluates the varying code over `count` samples (a multiple of the
+//     vector width), `width` samples at a time as <width x float> vectors.
 //
-// input_planes: the InputPlane order of ir/kernel.h.
+// uniform_globals and input_planes follow the globals table
+// (nodes/globals.h); output_planes the graph kind's output layout.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "graph/diagnostic.h"
 #include "ir/kernel.h"
@@ -24,8 +29,17 @@ class Module;
 
 namespace shadetree {
 
-using KernelFunction = void (*)(const float* params, const float* const* input_planes, float time, float frame,
-                                float* const* output_planes, std::int64_t count);
+using KernelBindFunction = void (*)(const float* params, const float* uniform_globals, float* state);
+using KernelRunFunction = void (*)(const float* state, const float* const* input_planes, float* const* output_planes,
+                                   std::int64_t count);
+
+// Where the bind function leaves each uniform value (-1: not kept, as
+// constants are emitted where they are used), and the floats it needs.
+struct UniformStateLayout {
+  std::vector<int> slots;  // per instruction: first float in the state block
+  int size = 0;
+};
+UniformStateLayout uniform_state_layout(const ShadeIR& ir);
 
 // How the op library's table lookups become instructions: one hardware
 // gather per lookup (vgatherdps / vpgatherdd); one scalar load per lane; or,
@@ -34,8 +48,8 @@ using KernelFunction = void (*)(const float* params, const float* const* input_p
 // also looks the noise permutation up as bytes (AVX-512 VBMI).
 enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes };
 
-// The module holds the kernel (named `function_name`) and the op library it
-// calls, marked for inlining.
+// The module holds the kernel's two functions (`function_name` + "_bind"
+// and "_run") and the op library they call, marked for inlining.
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                          const std::string& function_name,
                                                          GatherStrategy gathers = GatherStrategy::hardware);

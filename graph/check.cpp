@@ -9,6 +9,7 @@
 
 #include "graph/number_list.h"
 #include "nodes/noise_tables.h"
+#include "nodes/output_contract.h"
 #include "nodes/semantics/splines.h"
 
 namespace shadetree {
@@ -54,7 +55,7 @@ class Checker {
     result.graph = std::move(graph);
     result.main = check_body(graph_.nodes, graph_.outputs, nullptr);
     result.functions = std::move(functions_);
-    check_required_outputs(result.main);
+    check_outputs(result.main);
     return result;
   }
 
@@ -93,9 +94,9 @@ class Checker {
       callee.op = op;
       callee.inputs = op->inputs;
       callee.outputs = op->outputs;
-      if (!op->kinds.empty() && std::find(op->kinds.begin(), op->kinds.end(), graph_.kind) == op->kinds.end())
-        fail(node.id, {}, "op \"" + op->name + "\" is only available in " + op->kinds[0] + " graphs, this is a " +
-                              graph_.kind + " graph");
+      if (!op->kinds.contains(graph_.kind))
+        fail(node.id, {}, "op \"" + op->name + "\" is only available in " + kind_set_names(op->kinds) +
+                              " graphs, this is a " + std::string(graph_kind_name(graph_.kind)) + " graph");
       return callee;
     }
     auto found = function_index_.find(node.op);
@@ -391,7 +392,7 @@ class Checker {
         fail(node.id, {}, "unknown field \"" + name + "\" (inputs go in \"in\"; attributes of " + op.name + ": " +
                               join_names(names) + ")");
     }
-    if (uses_noise_tables(op.id)) {
+    if (op.tables == OpTables::noise) {
       checked.immediate[0] = static_cast<std::int32_t>(default_noise_seed);
       if (const AttributeValue* seed = attribute(node, op, "seed")) {
         if (seed->kind != AttributeValue::Kind::number || seed->number != std::floor(seed->number) ||
@@ -522,27 +523,31 @@ class Checker {
     }
   }
 
-  void check_required_outputs(const CheckedBody& body) const {
-    for (const CheckedOutput& output : body.outputs)
-      if (output.name == "alpha" && !accepts(output.source, Type::float_))
-        fail({}, {}, "output \"alpha\": expected float, got " + type_text(output.source.type));
-    for (const RequiredOutput& required : required_outputs(graph_.kind)) {
-      auto found = std::find_if(body.outputs.begin(), body.outputs.end(),
-                                [&](const CheckedOutput& output) { return output.name == required.name; });
-      if (found == body.outputs.end())
-        fail({}, {}, "a " + graph_.kind + " graph needs an output \"" + required.name + "\"");
-      const Type type = found->source.type;
-      bool accepted = false;
-      std::string expected;
-      for (Type candidate : required.types) {
-        accepted |= accepts(found->source, candidate);
-        expected += (expected.empty() ? "" : " or ") + type_text(candidate);
-      }
-      if (!accepted)
-        fail({}, {}, "output \"" + std::string(required.name) + "\": expected " + expected + ", got " +
-                         type_text(type));
+  // The main body's outputs against the kind's contract: known names,
+  // convertible types, required ones present.
+  void check_outputs(const CheckedBody& body) const {
+    const std::string kind(graph_kind_name(graph_.kind));
+    std::string names;
+    for (const OutputSpec& spec : output_contract(graph_.kind))
+      names += (names.empty() ? "" : ", ") + std::string(spec.name);
+    for (const CheckedOutput& output : body.outputs) {
+      const OutputSpec* spec = find_output_spec(graph_.kind, output.name);
+      if (!spec) fail({}, {}, "\"" + output.name + "\" is not an output of " + kind + " graphs (" + names + ")");
+      // At an output, a vec3 is taken for a color and a color for a vec3.
+      const bool three_components = spec->type == Type::color || spec->type == Type::vec3;
+      if (!accepts(output.source, spec->type) &&
+          !(three_components && component_count(output.source.type) == 3))
+        fail({}, {}, "output \"" + output.name + "\": expected " + type_text(spec->type) + ", got " +
+                         type_text(output.source.type));
+    }
+    for (const OutputSpec& spec : output_contract(graph_.kind)) {
+      const bool present = std::any_of(body.outputs.begin(), body.outputs.end(),
+                                       [&](const CheckedOutput& output) { return output.name == spec.name; });
+      if (spec.required && !present)
+        fail({}, {}, "a " + kind + " graph needs an output \"" + std::string(spec.name) + "\"");
     }
   }
+
 
   const Graph& graph_;
   std::map<std::string, int> function_index_;
@@ -553,10 +558,6 @@ class Checker {
 
 }  // namespace
 
-std::vector<RequiredOutput> required_outputs(const std::string& kind) {
-  if (kind == "volume") return {{"density", {Type::float_}}};
-  return {{"color", {Type::color, Type::vec3, Type::float_}}};
-}
 
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph) {
   try {

@@ -64,12 +64,6 @@ inline constexpr int max_function_nesting = 64;
 
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph);
 
-// The outputs each graph kind must provide, and the types each accepts.
-struct RequiredOutput {
-  const char* name;
-  std::vector<Type> types;
-};
-std::vector<RequiredOutput> required_outputs(const std::string& kind);
 
 // Validates a value given for a param (from --set or an editor) against
 // its declaration: type, component count and range.

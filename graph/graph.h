@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/graph_kind.h"
 #include "nodes/type.h"
 
 namespace shadetree {
@@ -85,7 +86,7 @@ struct Graph {
   std::string file;  // as given on the command line, for messages
   int version = graph_format_version;
   std::string name;
-  std::string kind;  // texture, surface or volume
+  GraphKind kind = GraphKind::texture;
   std::string doc;
   std::vector<ParamDecl> params;
   std::vector<FunctionDef> functions;
@@ -94,6 +95,5 @@ struct Graph {
   RenderSettings render;
 };
 
-inline const char* const graph_kinds[] = {"texture", "surface", "volume"};
 
 }  // namespace shadetree

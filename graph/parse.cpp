@@ -48,10 +48,10 @@ class Parser {
       fail({}, {}, "version " + std::to_string(graph.version) + " is not supported (this shadetree reads version " +
                        std::to_string(graph_format_version) + ")");
     graph.name = optional_string(document, "name", {}, stem(file_));
-    graph.kind = required_string(document, "kind", {});
-    bool known_kind = false;
-    for (const char* kind : graph_kinds) known_kind |= graph.kind == kind;
-    if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + graph.kind + "\"");
+    const std::string kind = required_string(document, "kind", {});
+    const std::optional<GraphKind> known_kind = parse_graph_kind(kind);
+    if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + kind + "\"");
+    graph.kind = *known_kind;
     graph.doc = optional_string(document, "doc", {}, {});
     if (document.contains("params")) graph.params = parse_params(document["params"]);
     if (document.contains("functions")) graph.functions = parse_functions(document["functions"]);

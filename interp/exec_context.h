@@ -1,12 +1,11 @@
-// What an op kernel of the interpreter sees: its instruction, register
-// planes for its arguments and result, and the lanes to compute.
+// What an op kernel of the interpreter sees: the planes of its arguments
+// and result, its compile-time constants, and the lanes to compute.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 
-#include "ir/kernel.h"
-#include "nodes/noise_tables.h"
+#include "nodes/op_frame.h"
+#include "nodes/op_id.h"
 
 namespace shadetree::interp {
 
@@ -27,32 +26,19 @@ inline void for_lanes(const Lanes& lanes, Body body) {
   }
 }
 
-struct ExecContext {
-  const ShadeIR* ir;
-  const IrInstr* instr;
-  std::int32_t self;
-  float* registers;
-  const std::size_t* register_offset;  // value -> first float of its planes
-  int block;                            // floats per plane
-  Lanes lanes;
-  const NoiseTables* tables;  // resolved from the seed, for noise ops
-  const float* params;
-  const KernelInputs* inputs;  // already advanced to this block's first sample
-
-  // Component c of argument `arg`; scalars are read as splatted vectors.
-  const float* in(int arg, int c = 0) const {
-    const std::int32_t value = instr->args[arg];
-    const int components = component_count(ir->code[value].type);
-    return registers + register_offset[value] + std::min(c, components - 1) * block;
-  }
-  float* out(int c = 0) const { return registers + register_offset[self] + c * block; }
-  int out_components() const { return component_count(instr->type); }
-  const float* data() const { return ir->data.data() + instr->data_offset; }
+// One instruction's planes, resolved once per binding: in[3a + c] is
+// component c of argument a (a scalar's plane repeated), out[c] of the
+// result.
+struct InstructionPlanes {
+  const float* const* in;
+  float* const* out;
+  const OpConstants* constants;
 };
 
-using OpKernel = void (*)(const ExecContext&);
+using OpKernel = void (*)(const InstructionPlanes& planes, const Lanes& lanes);
 
-// The kernel of each library op, indexed by OpId.
+// The kernel of each library op, generated from the op list (null for ops
+// that lowering replaces: inputs and split).
 OpKernel op_kernel(OpId op);
 
 }  // namespace shadetree::interp

@@ -1,10 +1,13 @@
 // The interpreted backend (see interpreter.h). Every ShadeIR value gets a
-// register of `components` planes of one block; uniform values are
-// computed once per run() call and stay in their registers, varying values
-// once per block. Conditional regions narrow the lane list to the samples
-// that take the branch and skip the region when none does.
+// register of `components` planes of one block. Binding computes the
+// uniform values once (params, constants, uniform globals and everything
+// that depends only on them), and they stay in their registers for every
+// run of the binding; runs compute the varying values block by block.
+// Conditional regions narrow the lane list to the samples that take the
+// branch and skip the region when none does.
 #include "interp/interpreter.h"
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -14,74 +17,144 @@
 namespace shadetree {
 namespace {
 
-using interp::ExecContext;
 using interp::Lanes;
+
+constexpr int block = interpreter_block_size;
 
 class InterpretedKernel final : public Kernel {
  public:
-  explicit InterpretedKernel(ShadeIR ir) : ir_(std::move(ir)) {
+  explicit InterpretedKernel(ShadeIR ir) : Kernel(ir), ir_(std::move(ir)) {
     register_offset_.resize(ir_.code.size());
     kernels_.resize(ir_.code.size(), nullptr);
-    tables_.resize(ir_.code.size(), nullptr);
+    constants_.resize(ir_.code.size());
     std::size_t offset = 0;
+    int depth = 0;
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       register_offset_[i] = offset;
-      offset += static_cast<std::size_t>(component_count(instr.type) * interpreter_block_size);
+      offset += static_cast<std::size_t>(component_count(instr.type) * block);
+      if (instr.kind == IrOpKind::begin_region) max_region_depth_ = std::max(max_region_depth_, ++depth);
+      if (instr.kind == IrOpKind::end_region) --depth;
       if (instr.kind != IrOpKind::op) continue;
       kernels_[i] = interp::op_kernel(instr.op);
-      if (uses_noise_tables(instr.op))
-        tables_[i] = &noise_tables(static_cast<std::uint32_t>(instr.immediate[0]));
+      OpConstants& constants = constants_[i];
+      constants.data = ir_.data.data() + instr.data_offset;
+      constants.data_count = instr.data_count;
+      constants.immediate[0] = instr.immediate[0];
+      constants.immediate[1] = instr.immediate[1];
+      constants.components = component_count(instr.type);
+      for (int a = 0; a < instr.arg_count; ++a) constants.arg_components[a] = component_count(argument_type(instr, a));
+      if (op_def(instr.op).tables == OpTables::noise)
+        constants.tables = &noise_tables(static_cast<std::uint32_t>(instr.immediate[0]));
     }
     register_floats_ = offset;
   }
 
   const ShadeIR& ir() const override { return ir_; }
 
-  void run(const float* params, const KernelInputs& inputs, float* const* outputs,
-           std::size_t count) const override {
-    std::vector<float> registers(register_floats_);
-    std::vector<std::uint16_t> lane_lists;  // one block-sized list per open region
-    const Lanes all{nullptr, interpreter_block_size, true};
-    execute(registers.data(), params, inputs, all, /*uniform_pass=*/true, lane_lists);
-    for (std::size_t start = 0; start < count; start += interpreter_block_size) {
-      const int block_count = static_cast<int>(std::min<std::size_t>(interpreter_block_size, count - start));
-      const KernelInputs block_inputs = inputs.advanced(start);
-      execute(registers.data(), params, block_inputs, Lanes{nullptr, block_count, true}, false, lane_lists);
-      write_outputs(registers.data(), outputs, start, block_count);
+  std::unique_ptr<BoundKernel> bind(const float* params, const UniformInputs& uniforms) const override;
+
+  // The first plane of value v's component c (a scalar's one plane for every c).
+  std::size_t plane_offset(std::int32_t value, int component) const {
+    const int components = component_count(ir_.code[value].type);
+    return register_offset_[value] + static_cast<std::size_t>(std::min(component, components - 1) * block);
+  }
+
+  ShadeIR ir_;
+  std::vector<std::size_t> register_offset_;
+  std::vector<interp::OpKernel> kernels_;
+  std::vector<OpConstants> constants_;
+  std::size_t register_floats_ = 0;
+  int max_region_depth_ = 0;
+};
+
+class InterpretedBinding final : public BoundKernel {
+ public:
+  InterpretedBinding(const InterpretedKernel& kernel, const float* params, const UniformInputs& uniforms)
+      : BoundKernel(kernel.reads(), kernel.outputs()),
+        kernel_(kernel),
+        ir_(kernel.ir_),
+        registers_(kernel.register_floats_),
+        lane_lists_(static_cast<std::size_t>(kernel.max_region_depth_) * block),
+        uniforms_(uniforms) {
+    region_stack_.reserve(static_cast<std::size_t>(kernel.max_region_depth_));
+    in_planes_.resize(ir_.code.size() * 3 * max_op_args);
+    out_planes_.resize(ir_.code.size() * 3);
+    for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+      const IrInstr& instr = ir_.code[i];
+      for (int a = 0; a < instr.arg_count; ++a)
+        for (int c = 0; c < 3; ++c)
+          in_planes_[(i * max_op_args + a) * 3 + c] = registers_.data() + kernel.plane_offset(instr.args[a], c);
+      for (int c = 0; c < component_count(instr.type); ++c)
+        out_planes_[i * 3 + c] = registers_.data() + kernel.plane_offset(static_cast<std::int32_t>(i), c);
+    }
+    params_ = params;
+    execute(Lanes{nullptr, block, true}, /*uniform_pass=*/true, SampleInputs{}, 0);
+    params_ = nullptr;
+  }
+
+  void run(const SampleInputs& inputs, float* const* outputs, std::size_t count) override {
+    for (std::size_t start = 0; start < count; start += block) {
+      const int block_count = static_cast<int>(std::min<std::size_t>(block, count - start));
+      execute(Lanes{nullptr, block_count, true}, false, inputs, start);
+      write_outputs(outputs, start, block_count);
     }
   }
 
+  // The components of value v, from lane 0 of its register.
+  std::vector<float> value(std::int32_t v) const {
+    std::vector<float> components;
+    for (int c = 0; c < component_count(ir_.code[v].type); ++c)
+      components.push_back(registers_[kernel_.plane_offset(v, c)]);
+    return components;
+  }
+
  private:
-  void execute(float* registers, const float* params, const KernelInputs& inputs, Lanes lanes, bool uniform_pass,
-               std::vector<std::uint16_t>& lane_lists) const {
-    std::vector<Lanes> stack;
-    ExecContext context{&ir_, nullptr, 0, registers, register_offset_.data(), interpreter_block_size,
-                        lanes, nullptr, params, &inputs};
+  float* out(std::size_t instruction, int component) { return out_planes_[instruction * 3 + component]; }
+  const float* in(std::size_t instruction, int arg, int component) const {
+    return in_planes_[(instruction * max_op_args + arg) * 3 + component];
+  }
+
+  static void fill(float value, float* to, const Lanes& lanes) {
+    interp::for_lanes(lanes, [&](int lane) { to[lane] = value; });
+  }
+
+  void execute(Lanes lanes, bool uniform_pass, const SampleInputs& inputs, std::size_t start) {
+    region_stack_.clear();
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
-      if (instr.uniform != uniform_pass && instr.kind != IrOpKind::end_region &&
-          instr.kind != IrOpKind::begin_region)
-        continue;
-      context.instr = &instr;
-      context.self = static_cast<std::int32_t>(i);
+      const bool marker = instr.kind == IrOpKind::begin_region || instr.kind == IrOpKind::end_region;
+      if (instr.uniform != uniform_pass && !marker) continue;
       switch (instr.kind) {
         case IrOpKind::op:
-          context.tables = tables_[i];
-          kernels_[i](context);
+          kernel_.kernels_[i](interp::InstructionPlanes{&in_planes_[i * max_op_args * 3], &out_planes_[i * 3],
+                                                        &kernel_.constants_[i]},
+                              lanes);
           break;
         case IrOpKind::constant:
           for (int c = 0; c < component_count(instr.type); ++c)
-            fill(ir_.data[instr.data_offset + std::min(c, instr.data_count - 1)], context.out(c), context.lanes);
+            fill(ir_.data[instr.data_offset + std::min(c, instr.data_count - 1)], out(i, c), lanes);
           break;
         case IrOpKind::param:
-          for (int c = 0; c < component_count(instr.type); ++c)
-            fill(params[instr.immediate[0] + c], context.out(c), context.lanes);
+          for (int c = 0; c < component_count(instr.type); ++c) fill(params_[instr.immediate[0] + c], out(i, c), lanes);
           break;
+        case IrOpKind::global: {
+          const auto id = static_cast<GlobalId>(instr.immediate[0]);
+          for (int c = 0; c < component_count(instr.type); ++c) {
+            if (instr.uniform) {
+              fill(uniforms_.get(id, c), out(i, c), lanes);
+              continue;
+            }
+            const float* from = inputs.plane(id, c) + start;
+            float* to = out(i, c);
+            interp::for_lanes(lanes, [&](int lane) { to[lane] = from[lane]; });
+          }
+          break;
+        }
         case IrOpKind::extract: {
-          const float* from = context.in(0, instr.immediate[0]);
-          float* to = context.out();
-          interp::for_lanes(context.lanes, [&](int lane) { to[lane] = from[lane]; });
+          const float* from = in(i, 0, instr.immediate[0]);
+          float* to = out(i, 0);
+          interp::for_lanes(lanes, [&](int lane) { to[lane] = from[lane]; });
           break;
         }
         case IrOpKind::begin_region: {
@@ -90,13 +163,11 @@ class InterpretedKernel final : public Kernel {
             i = static_cast<std::size_t>(instr.immediate[1]);
             break;
           }
-          const std::size_t depth = stack.size();
-          lane_lists.resize(std::max(lane_lists.size(), (depth + 1) * interpreter_block_size));
-          std::uint16_t* list = lane_lists.data() + depth * interpreter_block_size;
-          const float* condition = context.in(0);
+          std::uint16_t* list = lane_lists_.data() + region_stack_.size() * block;
+          const float* condition = in(i, 0, 0);
           const bool want = instr.immediate[0] == 0;
           int taken = 0;
-          interp::for_lanes(context.lanes, [&](int lane) {
+          interp::for_lanes(lanes, [&](int lane) {
             list[taken] = static_cast<std::uint16_t>(lane);
             taken += (condition[lane] != 0.0f) == want;
           });
@@ -104,51 +175,54 @@ class InterpretedKernel final : public Kernel {
             i = static_cast<std::size_t>(instr.immediate[1]);
             break;
           }
-          stack.push_back(context.lanes);
-          context.lanes = Lanes{list, taken, false};
+          region_stack_.push_back(lanes);
+          lanes = Lanes{list, taken, false};
           break;
         }
         case IrOpKind::end_region:
           if (uniform_pass) break;
-          context.lanes = stack.back();
-          stack.pop_back();
+          lanes = region_stack_.back();
+          region_stack_.pop_back();
           break;
       }
     }
   }
 
-  static void fill(float value, float* to, const Lanes& lanes) {
-    interp::for_lanes(lanes, [&](int lane) { to[lane] = value; });
-  }
-
-  void write_outputs(const float* registers, float* const* outputs, std::size_t start, int block_count) const {
-    std::size_t plane = 0;
+  void write_outputs(float* const* outputs, std::size_t start, int block_count) const {
+    const OutputLayout& layout = kernel_.outputs();
     for (const IrOutput& output : ir_.outputs) {
-      const int produced = component_count(ir_.code[output.value].type);
-      for (int c = 0; c < component_count(output.type); ++c, ++plane) {
-        const float* from = registers + register_offset_[output.value] + std::min(c, produced - 1) * interpreter_block_size;
-        std::memcpy(outputs[plane] + start, from, sizeof(float) * static_cast<std::size_t>(block_count));
+      for (int c = 0; c < component_count(output.type); ++c) {
+        float* to = outputs[layout.plane(output.id, c)];
+        if (!to) continue;
+        std::memcpy(to + start, registers_.data() + kernel_.plane_offset(output.value, c),
+                    sizeof(float) * static_cast<std::size_t>(block_count));
       }
     }
   }
 
-  ShadeIR ir_;
-  std::vector<std::size_t> register_offset_;
-  std::vector<interp::OpKernel> kernels_;
-  std::vector<const NoiseTables*> tables_;
-  std::size_t register_floats_ = 0;
+  const InterpretedKernel& kernel_;
+  const ShadeIR& ir_;
+  std::vector<float> registers_;
+  // One lane list per nesting level of regions, allocated for the deepest
+  // nesting up front: a region's list must not move while inner ones open.
+  std::vector<std::uint16_t> lane_lists_;
+  std::vector<Lanes> region_stack_;
+  std::vector<const float*> in_planes_;  // per instruction: max_op_args x 3
+  std::vector<float*> out_planes_;       // per instruction: 3
+  UniformInputs uniforms_;
+  const float* params_ = nullptr;  // during binding only
 };
+
+std::unique_ptr<BoundKernel> InterpretedKernel::bind(const float* params, const UniformInputs& uniforms) const {
+  return std::make_unique<InterpretedBinding>(*this, params, uniforms);
+}
 
 }  // namespace
 
 std::vector<float> evaluate_constant_program(const ShadeIR& program) {
-  std::size_t planes = 0;
-  for (const IrOutput& output : program.outputs) planes += static_cast<std::size_t>(component_count(output.type));
-  std::vector<float> values(planes);
-  std::vector<float*> pointers;
-  for (float& value : values) pointers.push_back(&value);
-  InterpretedKernel(program).run(nullptr, KernelInputs{}, pointers.data(), 1);
-  return values;
+  InterpretedKernel kernel(program);
+  InterpretedBinding binding(kernel, nullptr, UniformInputs{});
+  return binding.value(static_cast<std::int32_t>(program.code.size() - 1));
 }
 
 std::unique_ptr<Kernel> make_interpreted_kernel(ShadeIR ir) {

@@ -16,8 +16,9 @@ inline constexpr int interpreter_block_size = 256;
 
 std::unique_ptr<Kernel> make_interpreted_kernel(ShadeIR ir);
 
-// Runs a program that reads no inputs for one sample; returns its output
-// planes in order. The evaluator of constant folding (ir/optimize.h).
+// Runs a program of uniform instructions that reads no inputs; returns the
+// components of its last instruction. The evaluator of constant folding
+// (ir/optimize.h).
 std::vector<float> evaluate_constant_program(const ShadeIR& program);
 
 }  // namespace shadetree

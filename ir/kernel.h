@@ -1,74 +1,137 @@
-// One kernel interface for every backend: evaluate a graph over `count`
-// samples held in structure-of-arrays buffers. Drivers never know which
-// backend made the kernel.
+// One kernel interface for every backend and every driver: evaluate a
+// graph's program over samples held in structure-of-arrays planes.
+//
+// Inputs are the globals (nodes/globals.h): varying ones as planes of
+// floats (SampleInputs), uniform ones as one block per call
+// (UniformInputs). Outputs follow the graph kind's contract
+// (nodes/output_contract.h): OutputLayout says which plane holds what.
+//
+// A kernel is bound once (params and uniform globals: everything uniform
+// is computed then) and run many times on that binding, which keeps its
+// scratch between runs. A binding belongs to one thread at a time; a
+// Kernel is shared. Drivers never know which backend made the kernel.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "ir/shade_ir.h"
+#include "nodes/globals.h"
+#include "nodes/output_contract.h"
 
 namespace shadetree {
 
-// The varying input planes, in one fixed order (also the order in which a
-// JIT kernel receives them).
-enum class InputPlane : int { P_x, P_y, P_z, N_x, N_y, N_z, u, v, filter_width, density };
-inline constexpr int input_plane_count = 10;
+// The varying inputs of a run: one plane per component of each varying
+// global, in the globals table's order (null where the program does not
+// read it).
+struct SampleInputs {
+  const float* planes[varying_plane_count] = {};
 
-// Varying inputs are planes of `count` floats (null where the graph does
-// not read them); time and frame are the same for every sample of a call.
-struct KernelInputs {
-  const float* P[3] = {nullptr, nullptr, nullptr};
-  const float* N[3] = {nullptr, nullptr, nullptr};
-  const float* uv[2] = {nullptr, nullptr};
-  const float* filter_width = nullptr;
-  const float* density = nullptr;
-  float time = 0.0f;
-  float frame = 0.0f;
-
-  // The same inputs starting `offset` samples later.
-  KernelInputs advanced(std::size_t offset) const;
-
-  // The plane pointers in InputPlane order.
-  void planes(const float* out[input_plane_count]) const;
+  const float* plane(GlobalId id, int component = 0) const {
+    return planes[global_def(id).first + component];
+  }
 };
 
-// Storage for every varying input of `count` samples, zero-filled, plane
-// after plane. Drivers fill the planes they have and hand out inputs().
-class InputBuffers {
+// The uniform globals of a binding.
+struct UniformInputs {
+  float values[uniform_value_count] = {};
+
+  void set(GlobalId id, float value, int component = 0) { values[global_def(id).first + component] = value; }
+  float get(GlobalId id, int component = 0) const { return values[global_def(id).first + component]; }
+};
+
+// The globals `ir` reads, and the input planes of those that are varying.
+GlobalSet globals_read(const ShadeIR& ir);
+std::vector<int> varying_planes(const GlobalSet& read);
+
+// Zero-filled planes for the varying globals in `stored`, `count` samples
+// each. Drivers fill the planes of the globals the program reads
+// (has() says which) and hand out inputs().
+class SampleBuffers {
  public:
-  explicit InputBuffers(std::size_t count)
-      : count_(count), storage_(count * static_cast<std::size_t>(input_plane_count), 0.0f) {}
+  SampleBuffers(std::size_t count, const GlobalSet& stored);
 
-  float* plane(InputPlane which) { return storage_.data() + count_ * static_cast<std::size_t>(which); }
-  const float* plane(InputPlane which) const { return storage_.data() + count_ * static_cast<std::size_t>(which); }
+  bool has(GlobalId id) const { return stored_.test(static_cast<std::size_t>(id)); }
+  // Component `component` of global `id` (which must be stored).
+  float* plane(GlobalId id, int component = 0) {
+    return storage_.data() + offset_[global_def(id).first + component];
+  }
   std::size_t count() const { return count_; }
-
-  KernelInputs inputs(float time = 0.0f, float frame = 0.0f) const;
+  SampleInputs inputs() const;
 
  private:
   std::size_t count_;
+  GlobalSet stored_;
+  std::size_t offset_[varying_plane_count] = {};
   std::vector<float> storage_;
+};
+
+// Where a program's outputs are: the output planes of its kind's contract,
+// and which of them the program provides.
+struct OutputLayout {
+  GraphKind kind = GraphKind::texture;
+  int plane_count = 0;
+  int first_plane[output_id_count] = {};  // -1 where the program does not provide it
+
+  bool provides(OutputId id) const { return first_plane[static_cast<int>(id)] >= 0; }
+  int plane(OutputId id, int component = 0) const { return first_plane[static_cast<int>(id)] + component; }
+};
+
+OutputLayout output_layout(const ShadeIR& ir);
+
+// The planes of the outputs a program provides, in layout order.
+std::vector<int> provided_planes(const OutputLayout& layout);
+
+// A canonical text of the kernel ABI: the op table, the globals table and
+// the output contracts. Compiled kernels cached on disk are keyed on it.
+std::string kernel_abi();
+
+// A kernel with its params and uniform globals bound.
+class BoundKernel {
+ public:
+  virtual ~BoundKernel() = default;
+
+  // Samples 0 .. count-1. `outputs` holds the layout's plane_count planes;
+  // those of outputs the program does not provide may be null.
+  virtual void run(const SampleInputs& inputs, float* const* outputs, std::size_t count) = 0;
+
+  // Only the samples listed in `index`: sample index[k] reads its inputs
+  // and writes its outputs at index[k], so a driver can hand a compacted
+  // list of live rays or visible pixels without copying planes.
+  void run_indexed(const SampleInputs& inputs, float* const* outputs, const std::uint32_t* index,
+                   std::size_t count);
+
+ protected:
+  BoundKernel(const GlobalSet& reads, const OutputLayout& layout) : reads_(reads), layout_(layout) {}
+
+ private:
+  GlobalSet reads_;
+  OutputLayout layout_;
+  std::vector<float> indexed_scratch_;  // gathered inputs and outputs, reused across calls
 };
 
 class Kernel {
  public:
   virtual ~Kernel() = default;
 
-  // `params` is the uniform block (see lower.h: param_block); `outputs`
-  // holds one plane per component of each of ir().outputs, in order.
-  // Thread-safe: concurrent calls share nothing mutable.
-  virtual void run(const float* params, const KernelInputs& inputs, float* const* outputs,
-                   std::size_t count) const = 0;
-
   virtual const ShadeIR& ir() const = 0;
-};
 
-// Which inputs a program reads, so drivers can skip computing the rest.
-struct InputUsage {
-  bool P = false, N = false, uv = false, filter_width = false, density = false;
+  // `params` is the uniform block (see lower.h: param_block), read during
+  // bind only. Thread-safe.
+  virtual std::unique_ptr<BoundKernel> bind(const float* params, const UniformInputs& uniforms) const = 0;
+
+  const OutputLayout& outputs() const { return outputs_; }
+  const GlobalSet& reads() const { return reads_; }
+
+ protected:
+  explicit Kernel(const ShadeIR& ir) : outputs_(output_layout(ir)), reads_(globals_read(ir)) {}
+
+ private:
+  OutputLayout outputs_;
+  GlobalSet reads_;
 };
-InputUsage input_usage(const ShadeIR& ir);
 
 }  // namespace shadetree

@@ -7,8 +7,6 @@
 namespace shadetree {
 namespace {
 
-bool is_uniform_input(OpId op) { return op == OpId::time || op == OpId::frame; }
-
 class Lowering {
  public:
   explicit Lowering(const CheckedGraph& graph) : graph_(graph) {}
@@ -25,8 +23,10 @@ class Lowering {
       return Diagnostic{ExitStatus::invalid_input, graph_.graph->file, {}, {},
                         "the graph expands to more than " + std::to_string(max_program_instructions) +
                             " instructions once its functions are inlined"};
-    for (std::size_t i = 0; i < graph_.main.outputs.size(); ++i)
-      ir_.outputs.push_back({graph_.main.outputs[i].name, outputs[i].second, outputs[i].first});
+    ir_.kind = source.kind;
+    for (const OutputSpec& spec : output_contract(source.kind))
+      for (std::size_t i = 0; i < graph_.main.outputs.size(); ++i)
+        if (graph_.main.outputs[i].name == spec.name) ir_.outputs.push_back({spec.id, spec.type, outputs[i].first});
     return std::move(ir_);
   }
 
@@ -114,11 +114,19 @@ class Lowering {
       return components;
     }
     IrInstr instr;
-    instr.kind = IrOpKind::op;
     instr.op = op;
     instr.type = node.output_types[0];
+    instr.source = node.node->id;
+    if (const std::optional<GlobalId> global = global_of(op)) {
+      instr.kind = IrOpKind::global;
+      instr.immediate[0] = static_cast<std::int32_t>(*global);
+      instr.uniform = global_def(*global).variability == Variability::uniform;
+      return {{append(std::move(instr)), node.output_types[0]}};
+    }
+    instr.kind = IrOpKind::op;
+    instr.generic = node.generic_type;
     instr.arg_count = static_cast<std::uint8_t>(inputs.size());
-    bool uniform = node.op->family != OpFamily::input || is_uniform_input(op);
+    bool uniform = true;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       instr.args[i] = inputs[i].first;
       uniform = uniform && ir_.code[inputs[i].first].uniform;
@@ -128,7 +136,6 @@ class Lowering {
     instr.data_count = static_cast<std::int32_t>(node.data.size());
     ir_.data.insert(ir_.data.end(), node.data.begin(), node.data.end());
     instr.immediate = {node.immediate[0], node.immediate[1]};
-    instr.source = node.node->id;
     return {{append(std::move(instr)), node.output_types[0]}};
   }
 

@@ -14,8 +14,8 @@
 
 namespace shadetree {
 
-// Runs a program that reads no inputs for one sample and returns its output
-// planes: how constant folding computes values (the interpreter provides
+// Runs a program that reads no inputs and returns the components of its
+// last instruction: how constant folding computes values (the interpreter provides
 // it, so folded values are exactly what a backend would compute).
 using ConstantEvaluator = std::function<std::vector<float>(const ShadeIR& program)>;
 

@@ -23,6 +23,17 @@ void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order) {
   ir.code = std::move(code);
 }
 
+Type argument_type(const IrInstr& instr, int a) {
+  const PortSpec& port = op_def(instr.op).inputs[static_cast<std::size_t>(a)];
+  return port.rule == TypeRule::generic ? instr.generic : port.type;
+}
+
+std::string_view output_name(const ShadeIR& ir, const IrOutput& output) {
+  for (const OutputSpec& spec : output_contract(ir.kind))
+    if (spec.id == output.id) return spec.name;
+  return "?";
+}
+
 std::string format_shade_ir(const ShadeIR& ir) {
   std::ostringstream text;
   for (const IrParam& param : ir.params)
@@ -36,6 +47,7 @@ std::string format_shade_ir(const ShadeIR& ir) {
       case IrOpKind::op: text << op_def(instr.op).name; break;
       case IrOpKind::constant: text << "const"; break;
       case IrOpKind::param: text << "param"; break;
+      case IrOpKind::global: text << global_def(static_cast<GlobalId>(instr.immediate[0])).name; break;
       case IrOpKind::extract: text << "extract." << "xyz"[instr.immediate[0]]; break;
       case IrOpKind::begin_region: text << (instr.immediate[0] ? "region unless" : "region if"); break;
       case IrOpKind::end_region: text << "end region"; break;
@@ -49,66 +61,15 @@ std::string format_shade_ir(const ShadeIR& ir) {
       text << "]";
     }
     if (instr.kind == IrOpKind::param) text << " @" << instr.immediate[0];
-    if (instr.uniform && instr.kind == IrOpKind::op) text << "  uniform";
+    if (instr.uniform && (instr.kind == IrOpKind::op || instr.kind == IrOpKind::global)) text << "  uniform";
     if (!instr.source.empty()) text << "  ; " << instr.source;
     text << "\n";
     if (instr.kind == IrOpKind::begin_region) ++depth;
   }
   for (const IrOutput& output : ir.outputs)
-    text << "output " << output.name << ": " << type_name(output.type) << " = %" << output.value << "\n";
+    text << "output " << output_name(ir, output) << ": " << type_name(output.type) << " = %" << output.value << "\n";
   return text.str();
 }
 
 }  // namespace shadetree
 
-#include "ir/kernel.h"
-
-namespace shadetree {
-
-KernelInputs KernelInputs::advanced(std::size_t offset) const {
-  KernelInputs result = *this;
-  auto shift = [offset](const float*& plane) {
-    if (plane) plane += offset;
-  };
-  for (auto& plane : result.P) shift(plane);
-  for (auto& plane : result.N) shift(plane);
-  for (auto& plane : result.uv) shift(plane);
-  shift(result.filter_width);
-  shift(result.density);
-  return result;
-}
-
-void KernelInputs::planes(const float* out[input_plane_count]) const {
-  const float* all[input_plane_count] = {P[0], P[1], P[2], N[0], N[1], N[2], uv[0], uv[1], filter_width, density};
-  std::copy(all, all + input_plane_count, out);
-}
-
-KernelInputs InputBuffers::inputs(float time, float frame) const {
-  KernelInputs in;
-  for (int c = 0; c < 3; ++c) {
-    in.P[c] = plane(static_cast<InputPlane>(static_cast<int>(InputPlane::P_x) + c));
-    in.N[c] = plane(static_cast<InputPlane>(static_cast<int>(InputPlane::N_x) + c));
-  }
-  in.uv[0] = plane(InputPlane::u);
-  in.uv[1] = plane(InputPlane::v);
-  in.filter_width = plane(InputPlane::filter_width);
-  in.density = plane(InputPlane::density);
-  in.time = time;
-  in.frame = frame;
-  return in;
-}
-
-InputUsage input_usage(const ShadeIR& ir) {
-  InputUsage usage;
-  for (const IrInstr& instr : ir.code) {
-    if (instr.kind != IrOpKind::op) continue;
-    usage.P |= instr.op == OpId::P;
-    usage.N |= instr.op == OpId::N;
-    usage.uv |= instr.op == OpId::uv;
-    usage.filter_width |= instr.op == OpId::filter_width;
-    usage.density |= instr.op == OpId::density;
-  }
-  return usage;
-}
-
-}  // namespace shadetree

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "nodes/type.h"
+#include "nodes/graph_kind.h"
 #include "nodes/op_id.h"
+#include "nodes/output_contract.h"
 
 namespace shadetree {
 
@@ -19,6 +21,7 @@ enum class IrOpKind : std::uint8_t {
   op,            // a library op: `op` says which
   constant,      // data[data_offset ..] holds one value per component
   param,         // the uniform param block, from slot `immediate[0]`
+  global,        // the global immediate[0] (a GlobalId; nodes/globals.h)
   extract,       // component immediate[0] of args[0]
   begin_region,  // run until the matching end_region only where args[0] is
                  // true (immediate[0] = 0) or false (immediate[0] = 1);
@@ -30,6 +33,7 @@ struct IrInstr {
   IrOpKind kind = IrOpKind::op;
   OpId op = OpId::add;
   Type type = Type::float_;
+  Type generic = Type::float_;  // the op's type variable T, where it has one
   bool uniform = false;  // depends only on params and constants
   std::uint8_t arg_count = 0;
   std::array<std::int32_t, 6> args{-1, -1, -1, -1, -1, -1};
@@ -39,8 +43,10 @@ struct IrInstr {
   std::string source;  // the graph node it came from, for emit and messages
 };
 
+// An output of the graph's contract (nodes/output_contract.h), converted
+// to the contract's type.
 struct IrOutput {
-  std::string name;
+  OutputId id;
   Type type;
   std::int32_t value;
 };
@@ -52,9 +58,10 @@ struct IrParam {
 };
 
 struct ShadeIR {
+  GraphKind kind = GraphKind::texture;
   std::vector<IrInstr> code;
   std::vector<float> data;
-  std::vector<IrOutput> outputs;
+  std::vector<IrOutput> outputs;  // in contract order
   std::vector<IrParam> params;
   int param_block_size = 0;  // floats
 };
@@ -62,6 +69,14 @@ struct ShadeIR {
 // Keeps the instructions listed in `order` (old indices, each argument
 // before its users), renumbering arguments and outputs.
 void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order);
+
+// The type argument `a` of `instr` (an op) is converted to: its declared
+// type in the op's signature, with T resolved. The value it names may have
+// fewer components (a scalar read splatted).
+Type argument_type(const IrInstr& instr, int a);
+
+// The name of an output, from its kind's contract.
+std::string_view output_name(const ShadeIR& ir, const IrOutput& output);
 
 // Human-readable listing, one instruction a line (shadetree emit --graph).
 std::string format_shade_ir(const ShadeIR& ir);

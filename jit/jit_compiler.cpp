@@ -50,9 +50,12 @@ GatherStrategy effective_gathers(const JitSettings& settings) {
   return wanted;
 }
 
-// Bump when generated code changes meaning, so old disk caches are ignored.
-// (A changed op library changes the key by itself: see op_library_hash.)
-constexpr const char* cache_format = "shadetree-kernel-2";
+// What a cached object's calling convention depends on: the op table, the
+// globals table and the output contracts (ir/kernel.h), hashed once.
+std::uint64_t kernel_abi_hash() {
+  static const std::uint64_t hash = llvm::xxh3_64bits(llvm::StringRef(kernel_abi()));
+  return hash;
+}
 
 std::string error_text(llvm::Error error) {
   std::string text;
@@ -69,16 +72,19 @@ std::string host_features() {
 // A canonical text of everything the machine code depends on.
 std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
-  text << cache_format << " " << op_library_hash() << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  text << kernel_abi_hash() << " " << op_library_hash() << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
   for (const IrInstr& instr : ir.code) {
     text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
+         << ' ' << static_cast<int>(instr.generic)
          << ' ' << instr.uniform << ' ' << instr.data_offset << ' ' << instr.data_count << ' ' << instr.immediate[0]
          << ' ' << instr.immediate[1];
     for (int a = 0; a < instr.arg_count; ++a) text << ' ' << instr.args[a];
     text << '\n';
   }
   text.write(reinterpret_cast<const char*>(ir.data.data()), static_cast<std::streamsize>(ir.data.size() * sizeof(float)));
-  for (const IrOutput& output : ir.outputs) text << "out " << output.value << ' ' << static_cast<int>(output.type) << '\n';
+  text << "kind " << static_cast<int>(ir.kind) << '\n';
+  for (const IrOutput& output : ir.outputs)
+    text << "out " << static_cast<int>(output.id) << ' ' << output.value << ' ' << static_cast<int>(output.type) << '\n';
   return text.str();
 }
 
@@ -160,10 +166,10 @@ class Jit {
       if (object) {
         if (llvm::Error error = jit_->addObjectFile(std::move(*object))) {
           llvm::consumeError(std::move(error));
-        } else if (auto address = jit_->lookup(name)) {
-          return remember(name, {address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::disk});
-        } else {
-          llvm::consumeError(address.takeError());
+        } else if (Result<CompiledKernel> found = look_up(name, width)) {
+          found->compile_milliseconds = elapsed();
+          found->cache = CacheHit::disk;
+          return remember(name, *found);
         }
       }
     }
@@ -264,9 +270,18 @@ class Jit {
     if (!module) return module.error();
     if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
       return failure("JIT: " + error_text(std::move(error)));
-    auto address = jit_->lookup(name);
-    if (!address) return failure("JIT: " + error_text(address.takeError()));
-    return CompiledKernel{address->toPtr<KernelFunction>(), width, elapsed(), CacheHit::none};
+    Result<CompiledKernel> compiled = look_up(name, width);
+    if (compiled) compiled->compile_milliseconds = elapsed();
+    return compiled;
+  }
+
+  // The kernel's two functions, once its module or object is in the JIT.
+  Result<CompiledKernel> look_up(const std::string& name, int width) {
+    auto bind = jit_->lookup(name + "_bind");
+    if (!bind) return failure("JIT: " + error_text(bind.takeError()));
+    auto run = jit_->lookup(name + "_run");
+    if (!run) return failure("JIT: " + error_text(run.takeError()));
+    return CompiledKernel{bind->toPtr<KernelBindFunction>(), run->toPtr<KernelRunFunction>(), width, 0, CacheHit::none};
   }
 
   void optimize_module(llvm::Module& module) {

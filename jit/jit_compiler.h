@@ -22,7 +22,8 @@ int host_vector_width();
 enum class CacheHit { none, memory, disk };
 
 struct CompiledKernel {
-  KernelFunction function = nullptr;
+  KernelBindFunction bind = nullptr;
+  KernelRunFunction run = nullptr;
   int width = 0;
   double compile_milliseconds = 0;
   CacheHit cache = CacheHit::none;

@@ -1,7 +1,9 @@
-// The JIT kernel: full vectors go straight to the compiled code; the tail
-// (fewer than W samples) is copied into padded scratch planes, run as one
-// more vector, and copied back, so the generated loop never needs a mask
-// for memory.
+// The JIT kernel. Binding runs the compiled bind function into a state
+// block; runs hand full vectors straight to the compiled run function. The
+// tail (fewer than W samples) is copied into padded scratch planes, run as
+// one more vector, and copied back, so the generated loop never needs a
+// mask for memory. State and scratch belong to the binding and are reused
+// by every run.
 #include "jit/jit_kernel.h"
 
 #include <algorithm>
@@ -12,45 +14,66 @@ namespace {
 
 class JitKernel final : public Kernel {
  public:
-  JitKernel(ShadeIR ir, CompiledKernel compiled) : ir_(std::move(ir)), compiled_(compiled) {
-    for (const IrOutput& output : ir_.outputs) output_planes_ += component_count(output.type);
-  }
+  JitKernel(ShadeIR ir, CompiledKernel compiled)
+      : Kernel(ir), ir_(std::move(ir)), compiled_(compiled), state_size_(uniform_state_layout(ir_).size) {}
 
   const ShadeIR& ir() const override { return ir_; }
 
-  void run(const float* params, const KernelInputs& inputs, float* const* outputs, std::size_t count) const override {
-    const std::size_t width = static_cast<std::size_t>(compiled_.width);
-    const std::size_t full = count / width * width;
-    const float* planes[input_plane_count];
-    inputs.planes(planes);
-    if (full > 0)
-      compiled_.function(params, planes, inputs.time, inputs.frame, outputs, static_cast<std::int64_t>(full));
+  std::unique_ptr<BoundKernel> bind(const float* params, const UniformInputs& uniforms) const override;
+
+  ShadeIR ir_;
+  CompiledKernel compiled_;
+  int state_size_;
+};
+
+class JitBinding final : public BoundKernel {
+ public:
+  JitBinding(const JitKernel& kernel, const float* params, const UniformInputs& uniforms)
+      : BoundKernel(kernel.reads(), kernel.outputs()),
+        compiled_(kernel.compiled_),
+        state_(static_cast<std::size_t>(std::max(kernel.state_size_, 1))),
+        width_(static_cast<std::size_t>(kernel.compiled_.width)),
+        output_planes_(static_cast<std::size_t>(kernel.outputs().plane_count)),
+        provided_planes_(provided_planes(kernel.outputs())) {
+    compiled_.bind(params, uniforms.values, state_.data());
+    // Padded tail planes: the inputs the program reads, then every output.
+    tail_inputs_ = varying_planes(kernel.reads());
+    tail_scratch_.assign((tail_inputs_.size() + output_planes_) * width_, 0.0f);
+    for (std::size_t i = 0; i < tail_inputs_.size(); ++i)
+      tail_planes_.planes[tail_inputs_[i]] = tail_scratch_.data() + i * width_;
+    for (std::size_t p = 0; p < output_planes_; ++p)
+      tail_outputs_.push_back(tail_scratch_.data() + (tail_inputs_.size() + p) * width_);
+  }
+
+  void run(const SampleInputs& inputs, float* const* outputs, std::size_t count) override {
+    const std::size_t full = count / width_ * width_;
+    if (full > 0) compiled_.run(state_.data(), inputs.planes, outputs, static_cast<std::int64_t>(full));
     const std::size_t tail = count - full;
     if (tail == 0) return;
-    // Padded copies: unused inputs stay null, the padding lanes read zeros.
-    std::vector<float> scratch((input_plane_count + output_planes_) * width, 0.0f);
-    const float* tail_planes[input_plane_count];
-    for (int p = 0; p < input_plane_count; ++p) {
-      tail_planes[p] = nullptr;
-      if (!planes[p]) continue;
-      float* copy = scratch.data() + p * width;
-      std::copy(planes[p] + full, planes[p] + count, copy);
-      tail_planes[p] = copy;
+    for (std::size_t i = 0; i < tail_inputs_.size(); ++i) {
+      const float* from = inputs.planes[tail_inputs_[i]] + full;
+      std::copy(from, from + tail, tail_scratch_.data() + i * width_);
     }
-    std::vector<float*> tail_outputs(output_planes_);
-    for (std::size_t p = 0; p < output_planes_; ++p)
-      tail_outputs[p] = scratch.data() + (input_plane_count + p) * width;
-    compiled_.function(params, tail_planes, inputs.time, inputs.frame, tail_outputs.data(),
-                       static_cast<std::int64_t>(width));
-    for (std::size_t p = 0; p < output_planes_; ++p)
-      std::copy(tail_outputs[p], tail_outputs[p] + tail, outputs[p] + full);
+    compiled_.run(state_.data(), tail_planes_.planes, tail_outputs_.data(), static_cast<std::int64_t>(width_));
+    for (int p : provided_planes_)
+      if (outputs[p]) std::copy(tail_outputs_[p], tail_outputs_[p] + tail, outputs[p] + full);
   }
 
  private:
-  ShadeIR ir_;
   CompiledKernel compiled_;
-  std::size_t output_planes_ = 0;
+  std::vector<float> state_;
+  std::size_t width_;
+  std::size_t output_planes_;
+  std::vector<int> provided_planes_;
+  std::vector<int> tail_inputs_;
+  std::vector<float> tail_scratch_;
+  SampleInputs tail_planes_;
+  std::vector<float*> tail_outputs_;
 };
+
+std::unique_ptr<BoundKernel> JitKernel::bind(const float* params, const UniformInputs& uniforms) const {
+  return std::make_unique<JitBinding>(*this, params, uniforms);
+}
 
 }  // namespace
 

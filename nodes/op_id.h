@@ -1,43 +1,54 @@
-// Every op of the node library, as an enumerator. The order is the order of
-// `shadetree nodes`; the definitions are in nodes/signatures.cpp.
+// Every op of the node library, as an enumerator, in the order of
+// `shadetree nodes`: first one input op per global (nodes/globals.h), then
+// the library ops of SHADETREE_LIBRARY_OPS, each defined by the struct of
+// the same name in nodes/ops/ (its signature and its semantics). A new op
+// is a struct there and its name here; the registry, the interpreter's
+// dispatch and the JIT's op library are all generated from this list, so
+// their order cannot drift.
 #pragma once
 
 #include <cstdint>
 
+#include "nodes/globals.h"
+
 namespace shadetree {
 
-#define SHADETREE_OPS(X)                                                      \
-  /* inputs */                                                                \
-  X(P) X(N) X(uv) X(time) X(frame) X(filter_width) X(density)                \
-  /* generators */                                                            \
+#define SHADETREE_LIBRARY_OPS(X)                                              \
+  /* generators (nodes/ops/generators.h) */                                   \
   X(noise) X(dnoise) X(vnoise) X(noise_improved) X(turbulence) X(fbm)        \
   X(sines) X(swave) X(julia) X(checker)                                       \
-  /* arithmetic */                                                            \
+  /* arithmetic (nodes/ops/arithmetic.h) */                                   \
   X(add) X(sub) X(mul) X(div) X(neg) X(min) X(max) X(clamp) X(abs) X(floor)  \
   X(fract) X(mod) X(pow) X(sqrt) X(exp) X(log) X(sin) X(cos) X(mix) X(step)  \
   X(smoothstep) X(bias) X(gain) X(remap)                                      \
-  /* vectors */                                                               \
+  /* vectors (nodes/ops/vectors.h) */                                         \
   X(dot) X(cross) X(length) X(normalize) X(split) X(vec2) X(vec3) X(color)   \
   X(to_color) X(to_vec3)                                                      \
-  /* conditionals */                                                          \
+  /* conditionals (nodes/ops/conditionals.h) */                               \
   X(lt) X(le) X(gt) X(ge) X(eq) X(ne) X(and_) X(or_) X(not_) X(select)       \
   X(if_)                                                                      \
-  /* splines and tables */                                                    \
+  /* splines and tables (nodes/ops/splines.h) */                              \
   X(spline) X(color_table) X(table1d) X(table2d)                              \
-  /* soft objects */                                                          \
+  /* soft objects (nodes/ops/soft_objects.h) */                               \
   X(sphere) X(box) X(torus) X(intersect) X(union_) X(difference)             \
   X(complement)
 
 enum class OpId : std::uint16_t {
+#define SHADETREE_GLOBAL_OP(name, type, variability, kinds, doc) name,
+  SHADETREE_GLOBALS(SHADETREE_GLOBAL_OP)
+#undef SHADETREE_GLOBAL_OP
 #define SHADETREE_ENUMERATOR(name) name,
-  SHADETREE_OPS(SHADETREE_ENUMERATOR)
+  SHADETREE_LIBRARY_OPS(SHADETREE_ENUMERATOR)
 #undef SHADETREE_ENUMERATOR
 };
 
-inline constexpr int op_count = 0
+inline constexpr int op_count = global_count
 #define SHADETREE_COUNT(name) +1
-    SHADETREE_OPS(SHADETREE_COUNT)
+    SHADETREE_LIBRARY_OPS(SHADETREE_COUNT)
 #undef SHADETREE_COUNT
     ;
+
+// The enumerator's name: the op library symbol of the JIT (st_<symbol>_w<W>).
+const char* op_symbol(OpId id);
 
 }  // namespace shadetree

@@ -1,7 +1,8 @@
 // The node library: for every op its name, family, one-line doc, typed
-// inputs (with defaults), outputs and compile-time attributes. It is the
-// single source of truth for the type checker, `shadetree nodes`, the JSON
-// Schema and both backends (which take the semantics from nodes/semantics/).
+// inputs (with defaults), outputs, compile-time attributes and tables. It
+// is the single source of truth for the type checker, `shadetree nodes`,
+// the JSON Schema and both backends, whose bindings are generated from the
+// op list (SHADETREE_OPS in op_id.h) and each op's semantics in nodes/ops/.
 #pragma once
 
 #include <optional>
@@ -10,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "nodes/globals.h"
+#include "nodes/graph_kind.h"
 #include "nodes/type.h"
 #include "nodes/limits.h"
 #include "nodes/op_id.h"
@@ -58,28 +61,37 @@ enum class OpFamily : unsigned char {
   input, generator, arithmetic, vector, conditional, spline, soft_object
 };
 
+// The tables an op reads besides its attribute data.
+enum class OpTables : unsigned char {
+  none,
+  noise,  // the seeded permutation and gradient tables; the op takes a `seed` attribute
+};
+
+// An op's definition: everything but its semantics, which sit beside it in
+// nodes/ops/ (see op_frame.h). Input ops are made from the globals table.
 struct OpDef {
-  OpId id;
+  OpId id{};  // set by the registry: the op's place in SHADETREE_OPS
   std::string name;
-  OpFamily family;
+  OpFamily family = OpFamily::arithmetic;
   std::string doc;
   GenericSet generic = GenericSet::none;
   std::vector<PortSpec> inputs;
   std::vector<PortSpec> outputs;
   std::vector<AttributeSpec> attributes;
+  OpTables tables = OpTables::none;
   // For `spline` and `color_table`, T is the type of the knot values
   // (numbers -> float, 2-arrays -> vec2, 3-arrays -> color).
   bool type_from_knots = false;
-  // Only valid in graphs of these kinds (empty: all kinds).
-  std::vector<std::string> kinds;
+  KindSet kinds = every_kind;  // the graph kinds the op may be used in
 };
 
 std::span<const OpDef> all_ops();
 
-// Ops that read the seeded noise tables (and take a `seed` attribute).
-bool uses_noise_tables(OpId id);
 const OpDef& op_def(OpId id);
 const OpDef* find_op(std::string_view name);
 std::string_view family_name(OpFamily family);
+
+// The global an input op reads, or nothing for the other ops.
+std::optional<GlobalId> global_of(OpId id);
 
 }  // namespace shadetree

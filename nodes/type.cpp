@@ -20,15 +20,6 @@ std::optional<Type> parse_type_name(std::string_view name) {
   return std::nullopt;
 }
 
-int component_count(Type type) {
-  switch (type) {
-    case Type::vec2: return 2;
-    case Type::vec3:
-    case Type::color: return 3;
-    default: return 1;
-  }
-}
-
 bool is_vector(Type type) { return component_count(type) > 1; }
 
 bool converts_to(Type from, Type to) {

@@ -16,7 +16,9 @@ inline constexpr Type all_types[] = {Type::float_, Type::int_, Type::bool_,
 
 std::string_view type_name(Type type);
 std::optional<Type> parse_type_name(std::string_view name);
-int component_count(Type type);
+constexpr int component_count(Type type) {
+  return type == Type::vec2 ? 2 : type == Type::vec3 || type == Type::color ? 3 : 1;
+}
 bool is_vector(Type type);  // vec2, vec3 or color
 
 // Implicit conversions (PSE-style): int -> float, and float (or int) ->

@@ -14,22 +14,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/thread_bindings.h"
+
 namespace shadetree {
 namespace {
 
 constexpr int tile_size = 64;
-
-int find_output(const ShadeIR& ir, const char* name) {
-  for (std::size_t i = 0; i < ir.outputs.size(); ++i)
-    if (ir.outputs[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-
-int first_plane(const ShadeIR& ir, int output) {
-  int plane = 0;
-  for (int i = 0; i < output; ++i) plane += component_count(ir.outputs[i].type);
-  return plane;
-}
 
 }  // namespace
 
@@ -55,6 +45,22 @@ TextureSample texture_sample_at_point(const TextureView& view, const float P[3])
   return sample;
 }
 
+void store_texture_sample(SampleBuffers& buffers, std::size_t i, const TextureSample& sample) {
+  if (buffers.has(GlobalId::P))
+    for (int c = 0; c < 3; ++c) buffers.plane(GlobalId::P, c)[i] = sample.P[c];
+  if (buffers.has(GlobalId::N)) buffers.plane(GlobalId::N, 2)[i] = 1.0f;  // N = +z, facing the viewer
+  if (buffers.has(GlobalId::uv))
+    for (int c = 0; c < 2; ++c) buffers.plane(GlobalId::uv, c)[i] = sample.uv[c];
+  if (buffers.has(GlobalId::filter_width)) buffers.plane(GlobalId::filter_width)[i] = sample.filter_width;
+}
+
+UniformInputs texture_uniforms(const TextureView& view) {
+  UniformInputs uniforms;
+  uniforms.set(GlobalId::time, view.frame / frames_per_second);
+  uniforms.set(GlobalId::frame, view.frame);
+  return uniforms;
+}
+
 TextureSample texture_sample_at_pixel(const TextureView& view, int column, int row) {
   const float u = (static_cast<float>(column) + 0.5f) / static_cast<float>(view.width);
   const float v = 1.0f - (static_cast<float>(row) + 0.5f) / static_cast<float>(view.height);
@@ -68,59 +74,44 @@ TextureSample texture_sample_at_pixel(const TextureView& view, int column, int r
 
 Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                              const TextureRenderOptions& options) {
-  const ShadeIR& ir = kernel.ir();
-  const int color = find_output(ir, "color");
-  if (color < 0) return invalid_input("a texture graph needs an output \"color\"");
-  const int alpha = find_output(ir, "alpha");
-  if (alpha >= 0 && component_count(ir.outputs[alpha].type) != 1)
-    return invalid_input("output \"alpha\" must be a float");
-  int total_planes = 0;
-  for (const IrOutput& output : ir.outputs) total_planes += component_count(output.type);
-  const int color_components = component_count(ir.outputs[color].type);
+  const OutputLayout& layout = kernel.outputs();
+  if (layout.kind != GraphKind::texture || !layout.provides(OutputId::color))
+    return invalid_input("the texture driver needs a texture graph with an output \"color\"");
+  const bool alpha = layout.provides(OutputId::alpha);
 
   Image image;
   image.width = view.width;
   image.height = view.height;
-  image.channels = alpha >= 0 ? 4 : 3;
+  image.channels = alpha ? 4 : 3;
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * image.channels, 0.0f);
 
   const int tiles_x = (view.width + tile_size - 1) / tile_size;
   const int tiles_y = (view.height + tile_size - 1) / tile_size;
   std::atomic<int> tiles_done{0};
   const int tile_count = tiles_x * tiles_y;
+  ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
 
   auto render_tile = [&](int tile_x, int tile_y) {
     const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
     const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
     const std::size_t count = static_cast<std::size_t>(w) * h;
-    InputBuffers input(count);
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        const TextureSample sample = texture_sample_at_pixel(view, x0 + x, y0 + y);
-        input.plane(InputPlane::P_x)[i] = sample.P[0];
-        input.plane(InputPlane::P_y)[i] = sample.P[1];
-        input.plane(InputPlane::P_z)[i] = sample.P[2];
-        input.plane(InputPlane::N_z)[i] = 1.0f;  // N = +z, facing the viewer
-        input.plane(InputPlane::u)[i] = sample.uv[0];
-        input.plane(InputPlane::v)[i] = sample.uv[1];
-        input.plane(InputPlane::filter_width)[i] = sample.filter_width;
-      }
-    }
-    std::vector<float> output_storage(count * static_cast<std::size_t>(total_planes));
+    SampleBuffers input(count, kernel.reads());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        store_texture_sample(input, static_cast<std::size_t>(y) * w + x, texture_sample_at_pixel(view, x0 + x, y0 + y));
+    std::vector<float> output_storage(count * static_cast<std::size_t>(layout.plane_count));
     std::vector<float*> outputs;
-    for (int p = 0; p < total_planes; ++p) outputs.push_back(output_storage.data() + count * static_cast<std::size_t>(p));
-    kernel.run(params.data(), input.inputs(view.frame / frames_per_second, view.frame), outputs.data(), count);
+    for (int p = 0; p < layout.plane_count; ++p)
+      outputs.push_back(output_storage.data() + count * static_cast<std::size_t>(p));
+    bindings.local().run(input.inputs(), outputs.data(), count);
 
-    const int color_plane = first_plane(ir, color);
-    const int alpha_plane = alpha >= 0 ? first_plane(ir, alpha) : -1;
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         float* pixel = image.pixels.data() +
                        (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
-        for (int c = 0; c < 3; ++c) pixel[c] = outputs[color_plane + std::min(c, color_components - 1)][i];
-        if (alpha_plane >= 0) pixel[3] = outputs[alpha_plane][i];
+        for (int c = 0; c < 3; ++c) pixel[c] = outputs[layout.plane(OutputId::color, c)][i];
+        if (alpha) pixel[3] = outputs[layout.plane(OutputId::alpha)][i];
       }
     }
     const int done = ++tiles_done;

@@ -29,12 +29,19 @@ struct TextureSample {
   float filter_width;
 };
 
+// Writes a sample's inputs into sample i of `buffers` (those it stores):
+// P, uv, filter_width, and N = +z.
+void store_texture_sample(SampleBuffers& buffers, std::size_t i, const TextureSample& sample);
+
+inline constexpr float frames_per_second = 24.0f;
+
+// The uniform globals of a view: time = frame / 24, frame.
+UniformInputs texture_uniforms(const TextureView& view);
+
 // Pixel (column, row), row 0 at the top, sampled at its centre.
 TextureSample texture_sample_at_pixel(const TextureView& view, int column, int row);
 // Any point: uv from its place in the domain, filter_width from pixel size.
 TextureSample texture_sample_at_point(const TextureView& view, const float P[3]);
-
-inline constexpr float frames_per_second = 24.0f;
 
 struct Image {
   int width = 0;
@@ -48,7 +55,7 @@ struct TextureRenderOptions {
   std::function<void(double fraction_done)> progress;  // may be empty
 };
 
-// Output "color" (color or float, shown as grey) and optional "alpha".
+// A texture graph's "color" and optional "alpha" (nodes/output_contract.h).
 Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                              const TextureRenderOptions& options);
 

@@ -85,11 +85,23 @@ TEST(Check, ReportsCyclesWithTheirPath) {
 }
 
 TEST(Check, ReportsMissingOutputs) {
-  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("other": "p")")),
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}})",
+                                R"("alpha": "s.x")")),
             "error: g.json: a texture graph needs an output \"color\"");
   EXPECT_NE(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p")", "", "volume"))
                 .find("needs an output \"density\""),
             std::string::npos);
+}
+
+TEST(Check, OutputsFollowTheKindsContract) {
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p", "colour": "p")")),
+            "error: g.json: \"colour\" is not an output of texture graphs (color, alpha)");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p", "density": "p")", "", "surface")),
+            "error: g.json: \"density\" is not an output of surface graphs (color, normal, specular, roughness, "
+            "opacity, emission)");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}})",
+                                R"("density": "s.x", "ior": "p")", "", "volume")),
+            "error: g.json: output \"ior\": expected float, got vec3");
 }
 
 TEST(Check, ReportsWrongLiteralTypes) {

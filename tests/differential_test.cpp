@@ -20,14 +20,20 @@ namespace shadetree {
 namespace {
 
 // 517 samples: two interpreter blocks and a tail, and a tail for every
-// vector width.
+// vector width. Every varying global has a plane.
 struct SampleSet {
   static constexpr std::size_t count = 517;
-  InputBuffers input{count};
+  SampleBuffers input{count, GlobalSet().set()};
+  UniformInputs uniforms;
 
   SampleSet() {
     std::mt19937 random(1989);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    auto store_unit_vector = [&](GlobalId id, std::size_t i) {
+      const float v[3] = {unit(random), unit(random), unit(random) + 2.0f};
+      const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      for (int c = 0; c < 3; ++c) input.plane(id, c)[i] = v[c] / length;
+    };
     for (std::size_t i = 0; i < count; ++i) {
       float p[3];
       switch (i % 5) {
@@ -43,20 +49,21 @@ struct SampleSet {
         default:
           for (float& c : p) c = unit(random) * 3.0f;
       }
-      const float n[3] = {unit(random), unit(random), unit(random) + 2.0f};
-      const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (int c = 0; c < 3; ++c) input.plane(GlobalId::P, c)[i] = p[c];
+      for (GlobalId id : {GlobalId::N, GlobalId::I, GlobalId::L}) store_unit_vector(id, i);
+      for (int c = 0; c < 2; ++c) input.plane(GlobalId::uv, c)[i] = (unit(random) + 1.0f) / 2.0f;
       const float widths[] = {0.0f, 0.001f, 0.01f, 0.1f, 0.7f};
-      const float values[input_plane_count] = {p[0], p[1], p[2], n[0] / length, n[1] / length, n[2] / length,
-                                               (unit(random) + 1.0f) / 2.0f, (unit(random) + 1.0f) / 2.0f,
-                                               widths[i % 5], (unit(random) + 1.0f) / 2.0f};
-      for (int plane = 0; plane < input_plane_count; ++plane) input.plane(static_cast<InputPlane>(plane))[i] = values[plane];
+      input.plane(GlobalId::filter_width)[i] = widths[i % 5];
+      input.plane(GlobalId::density)[i] = (unit(random) + 1.0f) / 2.0f;
+      input.plane(GlobalId::surface)[i] = static_cast<float>(i % 4);
     }
+    uniforms.set(GlobalId::time, 0.75f);
+    uniforms.set(GlobalId::frame, 18.0f);
+    uniforms.set(GlobalId::step_size, 0.01f);
+    for (int c = 0; c < 3; ++c) uniforms.set(GlobalId::light_color, 1.0f - 0.1f * c, c);
   }
 
-  KernelInputs inputs() const { return input.inputs(0.75f, 18.0f); }
-  float P(int component, std::size_t i) const {
-    return input.plane(static_cast<InputPlane>(static_cast<int>(InputPlane::P_x) + component))[i];
-  }
+  float P(int component, std::size_t i) const { return input.inputs().plane(GlobalId::P, component)[i]; }
 };
 
 const SampleSet& samples() {
@@ -65,12 +72,12 @@ const SampleSet& samples() {
 }
 
 std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params) {
-  std::size_t planes = 0;
-  for (const IrOutput& output : kernel.ir().outputs) planes += static_cast<std::size_t>(component_count(output.type));
-  std::vector<std::vector<float>> results(planes, std::vector<float>(SampleSet::count, -12345.0f));
+  const OutputLayout& layout = kernel.outputs();
+  std::vector<std::vector<float>> results(static_cast<std::size_t>(layout.plane_count),
+                                          std::vector<float>(SampleSet::count, -12345.0f));
   std::vector<float*> pointers;
   for (auto& plane : results) pointers.push_back(plane.data());
-  kernel.run(params.data(), samples().inputs(), pointers.data(), SampleSet::count);
+  kernel.bind(params.data(), samples().uniforms)->run(samples().input.inputs(), pointers.data(), SampleSet::count);
   return results;
 }
 
@@ -137,7 +144,28 @@ const char* const preamble = R"(
   {"id": "color_a", "op": "to_color", "in": {"v": "p"}},
   {"id": "color_b", "op": "to_color", "in": {"v": "vec3_b"}},
   {"id": "bool_a", "op": "lt", "in": {"a": "s.x", "b": "s.y"}},
-  {"id": "fw", "op": "filter_width"})";
+  {"id": "fw", "op": "filter_width"},
+  {"id": "vec3_c", "op": "I"}, {"id": "vec3_d", "op": "L"}, {"id": "color_c", "op": "light_color"},
+  {"id": "object", "op": "surface"}, {"id": "float_d", "op": "add", "in": {"a": "object", "b": "s.x"}})";
+
+// A surface graph: its contract has three 3-component outputs (color,
+// emission, normal) and three float ones, enough for any node's outputs.
+const char* const header = R"({"format": "shadetree-graph", "version": 1, "kind": "surface", )";
+const char* const three_component_outputs[] = {"color", "emission", "normal"};
+
+// Nodes that turn value `id` of `type` into a color named `as`, so that it
+// can be an output.
+std::string to_color(const std::string& id, Type type, const std::string& as) {
+  switch (type) {
+    case Type::bool_:
+      return R"(, {"id": ")" + as + R"(", "op": "select", "in": {"cond": ")" + id + R"(", "then": 1, "else": 0}})";
+    case Type::vec2:
+      return R"(, {"id": ")" + as + R"(_s", "op": "split", "in": {"v": ")" + id + R"("}}, {"id": ")" + as +
+             R"(", "op": "color", "in": {"r": ")" + as + R"(_s.x", "g": ")" + as + R"(_s.y"}})";
+    default:
+      return R"(, {"id": ")" + as + R"(", "op": "mul", "in": {"a": ")" + id + R"(", "b": 1}})";
+  }
+}
 
 std::string attributes_for(OpId op) {
   switch (op) {
@@ -169,14 +197,14 @@ std::string source_for(Type type, const std::string& port, int which) {
 std::vector<std::string> single_node_graphs() {
   std::vector<std::string> graphs;
   for (const OpDef& op : all_ops()) {
-    if (op.id == OpId::density) continue;  // volume only: covered with kind volume below
+    if (!op.kinds.contains(GraphKind::surface)) continue;  // volume only: covered with kind volume below
     std::vector<Type> instances{Type::float_};
     if (op.generic == GenericSet::numeric && !op.type_from_knots)
       instances = {Type::float_, Type::vec2, Type::vec3, Type::color};
     if (op.generic == GenericSet::vectors) instances = {Type::vec2, Type::vec3, Type::color};
     for (Type instance : instances) {
       std::ostringstream text;
-      text << R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "name": ")" << op.name << "_"
+      text << header << R"("name": ")" << op.name << "_"
            << type_name(instance) << R"(", "nodes": [)" << preamble << R"(, {"id": "node", "op": ")" << op.name
            << R"(", "in": {)";
       for (std::size_t i = 0; i < op.inputs.size(); ++i) {
@@ -184,9 +212,15 @@ std::vector<std::string> single_node_graphs() {
         const Type type = port.rule == TypeRule::generic ? instance : port.type;
         text << (i ? ", " : "") << '"' << port.name << "\": " << source_for(type, port.name, static_cast<int>(i));
       }
-      text << "}" << attributes_for(op.id) << R"(}], "outputs": {"color": "float_a")";
-      for (const PortSpec& output : op.outputs) text << ", \"" << output.name << "\": \"node." << output.name << '"';
-      text << "}}";
+      text << "}" << attributes_for(op.id) << "}";
+      std::string outputs;
+      for (std::size_t k = 0; k < op.outputs.size(); ++k) {
+        const PortSpec& port = op.outputs[k];
+        const Type type = port.rule == TypeRule::generic ? (op.type_from_knots ? Type::color : instance) : port.type;
+        text << to_color("node." + port.name, type, "out" + std::to_string(k));
+        outputs += std::string(k ? ", " : "") + '"' + three_component_outputs[k] + "\": \"out" + std::to_string(k) + '"';
+      }
+      text << "], \"outputs\": {" << outputs << "}}";
       graphs.push_back(text.str());
     }
   }
@@ -227,13 +261,14 @@ class RandomGraph {
     pool_ = {{"float_a", Type::float_}, {"float_b", Type::float_}, {"float_c", Type::float_},
              {"vec2_a", Type::vec2},    {"vec2_b", Type::vec2},    {"vec3_a", Type::vec3},
              {"vec3_b", Type::vec3},    {"color_a", Type::color},  {"color_b", Type::color},
-             {"bool_a", Type::bool_},   {"fw", Type::float_}};
+             {"bool_a", Type::bool_},   {"fw", Type::float_},      {"vec3_c", Type::vec3},
+             {"vec3_d", Type::vec3},    {"color_c", Type::color},  {"float_d", Type::float_}};
     std::ostringstream nodes;
     nodes << preamble;
     const auto ops = all_ops();
     for (int n = 0; n < node_count; ++n) {
       const OpDef& op = ops[pick(ops.size())];
-      if (op.family == OpFamily::input || op.id == OpId::split) continue;
+      if (op.family == OpFamily::input || op.id == OpId::split || !op.kinds.contains(GraphKind::surface)) continue;
       Type instance = Type::float_;
       if (op.generic == GenericSet::numeric && !op.type_from_knots) instance = pick_of({Type::float_, Type::vec2, Type::vec3, Type::color});
       if (op.generic == GenericSet::vectors) instance = pick_of({Type::vec2, Type::vec3, Type::color});
@@ -251,10 +286,14 @@ class RandomGraph {
       pool_.push_back({id, output});
     }
     std::ostringstream outputs;
-    outputs << R"("color": "float_a")";
-    for (int k = 0; k < 4; ++k) outputs << ", \"out" << k << "\": \"" << pool_[pool_.size() - 1 - k * 3].first << '"';
-    return R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "nodes": [)" + nodes.str() +
-           "], \"outputs\": {" + outputs.str() + "}}";
+    for (int k = 0; k < 3; ++k) {
+      const auto& [id, type] = pool_[pool_.size() - 1 - static_cast<std::size_t>(k) * 3];
+      nodes << to_color(id, type, "out" + std::to_string(k));
+      outputs << (k ? ", " : "") << '"' << three_component_outputs[k] << "\": \"out" << k << '"';
+    }
+    for (const char* name : {"specular", "roughness", "opacity"})
+      outputs << ", \"" << name << "\": " << wire(Type::float_, name, true);
+    return header + std::string(R"("nodes": [)") + nodes.str() + "], \"outputs\": {" + outputs.str() + "}}";
   }
 
  private:

@@ -11,7 +11,8 @@ namespace {
 
 int count_op(const ShadeIR& ir, OpId op) {
   int count = 0;
-  for (const IrInstr& instr : ir.code) count += instr.kind == IrOpKind::op && instr.op == op;
+  for (const IrInstr& instr : ir.code)
+    count += (instr.kind == IrOpKind::op || instr.kind == IrOpKind::global) && instr.op == op;
   return count;
 }
 

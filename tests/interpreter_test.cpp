@@ -29,12 +29,12 @@ Evaluation evaluate(const std::string& text, std::size_t count) {
     result.pz.push_back(0.25f);
   }
   for (auto& plane : result.color) plane.assign(count, -1.0f);
-  KernelInputs inputs;
-  inputs.P[0] = result.px.data();
-  inputs.P[1] = result.py.data();
-  inputs.P[2] = result.pz.data();
-  float* outputs[3] = {result.color[0].data(), result.color[1].data(), result.color[2].data()};
-  make_interpreted_kernel(std::move(ir))->run(params.data(), inputs, outputs, count);
+  SampleInputs inputs;
+  inputs.planes[global_def(GlobalId::P).first] = result.px.data();
+  inputs.planes[global_def(GlobalId::P).first + 1] = result.py.data();
+  inputs.planes[global_def(GlobalId::P).first + 2] = result.pz.data();
+  float* outputs[4] = {result.color[0].data(), result.color[1].data(), result.color[2].data(), nullptr};
+  make_interpreted_kernel(std::move(ir))->bind(params.data(), UniformInputs{})->run(inputs, outputs, count);
   return result;
 }
 

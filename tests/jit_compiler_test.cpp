@@ -63,16 +63,20 @@ TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
   Result<CompiledKernel> second = compile_kernel(retuned->ir, 8, memory_only());
   ASSERT_TRUE(second.ok());
   EXPECT_EQ(second->cache, CacheHit::memory);
-  EXPECT_EQ(second->function, first->function);
+  EXPECT_EQ(second->run, first->run);
 
-  // The same machine code gives different values for different params.
+  // The same machine code gives different values for different params,
+  // bound once each.
   float px[8] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f}, zero[8] = {};
-  float red[2][8], green[8], blue[8];
-  const float* inputs[input_plane_count] = {px, px, zero};
+  float red[2][8], green[8], blue[8], alpha[8];
+  const float* inputs[varying_plane_count] = {px, px, zero};
+  const UniformInputs uniforms;
+  std::vector<float> state(static_cast<std::size_t>(uniform_state_layout(loaded->ir).size) + 1);
   for (int run = 0; run < 2; ++run) {
-    float* outputs[3] = {red[run], green, blue};
+    float* outputs[4] = {red[run], green, blue, alpha};
     const std::vector<float>& params = run == 0 ? loaded->params : retuned->params;
-    first->function(params.data(), inputs, 0.0f, 0.0f, outputs, 8);
+    first->bind(params.data(), uniforms.values, state.data());
+    first->run(state.data(), inputs, outputs, 8);
   }
   EXPECT_NE(std::vector<float>(red[0], red[0] + 8), std::vector<float>(red[1], red[1] + 8));
 }

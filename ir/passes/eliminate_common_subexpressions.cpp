@@ -21,6 +21,7 @@ std::string key_of(const ShadeIR& ir, const IrInstr& instr) {
   append(&instr.kind, sizeof instr.kind);
   append(&instr.op, sizeof instr.op);
   append(&instr.type, sizeof instr.type);
+  append(&instr.generic, sizeof instr.generic);
   append(&instr.arg_count, sizeof instr.arg_count);
   append(instr.args.data(), sizeof(std::int32_t) * instr.arg_count);
   append(instr.immediate.data(), sizeof instr.immediate);

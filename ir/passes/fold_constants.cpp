@@ -8,14 +8,12 @@
 // are hoisted out of the sample loop by the backends instead.
 #include "ir/passes/fold_constants.h"
 
-#include "nodes/registry.h"
-
 namespace shadetree {
 namespace {
 
 bool foldable(const ShadeIR& ir, const IrInstr& instr) {
   if (instr.kind == IrOpKind::extract) return ir.code[instr.args[0]].kind == IrOpKind::constant;
-  if (instr.kind != IrOpKind::op || op_def(instr.op).family == OpFamily::input) return false;
+  if (instr.kind != IrOpKind::op) return false;
   for (int a = 0; a < instr.arg_count; ++a)
     if (ir.code[instr.args[a]].kind != IrOpKind::constant) return false;
   return true;
@@ -40,7 +38,6 @@ void fold_constants(ShadeIR& ir, const ConstantEvaluator& evaluate) {
     program.data.insert(program.data.end(), ir.data.begin() + instr.data_offset,
                         ir.data.begin() + instr.data_offset + instr.data_count);
     program.code.push_back(folded);
-    program.outputs.push_back({"value", instr.type, static_cast<std::int32_t>(program.code.size() - 1)});
     const std::vector<float> value = evaluate(program);
 
     IrInstr constant;

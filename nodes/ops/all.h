@@ -1,0 +1,21 @@
+// Every library op's definition and semantics: the structs named in
+// SHADETREE_LIBRARY_OPS (nodes/op_id.h). Included by the bindings that are
+// generated from the op list: the registry, the interpreter's dispatch and
+// the JIT's op library.
+#pragma once
+
+#include "nodes/ops/arithmetic.h"
+#include "nodes/ops/conditionals.h"
+#include "nodes/ops/generators.h"
+#include "nodes/ops/soft_objects.h"
+#include "nodes/ops/splines.h"
+#include "nodes/ops/vectors.h"
+
+namespace shadetree::ops {
+
+// Ops with semantics over frames; the others (the input ops and split) are
+// lowered to other instructions.
+template <class Op, class Frame>
+concept Evaluated = requires(const Frame& x) { Op::evaluate(x); };
+
+}  // namespace shadetree::ops

@@ -1,0 +1,155 @@
+// Generators: noise (Perlin 1985, Perlin & Hoffert 1989, Perlin 2002) and
+// the pattern generators of the Pixel-Planes 5 T-code set (Rhoades et al.
+// 1992). Each op: its definition and its semantics over a frame (see
+// nodes/op_frame.h); the formulas are in nodes/semantics/.
+#pragma once
+
+#include "nodes/op_definition.h"
+#include "nodes/op_frame.h"
+#include "nodes/semantics/noise.h"
+#include "nodes/semantics/patterns.h"
+
+namespace shadetree::ops {
+
+using namespace define;
+namespace sem = semantics;
+
+struct noise {
+  static OpDef definition() {
+    return {.name = "noise", .family = OpFamily::generator,
+            .doc = "Perlin & Hoffert 1989 gradient noise in [-1,1], zero on the integer lattice",
+            .inputs = {in("p", Type::vec3)}, .outputs = {out(Type::float_)}, .attributes = {seed_attribute()},
+            .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::noise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
+};
+
+struct dnoise {
+  static OpDef definition() {
+    return {.name = "dnoise", .family = OpFamily::generator, .doc = "analytic gradient of noise (Perlin 1985 Dnoise)",
+            .inputs = {in("p", Type::vec3)}, .outputs = {out(Type::vec3)}, .attributes = {seed_attribute()},
+            .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    frame::store_vec3(x, sem::dnoise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2)));
+  }
+};
+
+struct vnoise {
+  static OpDef definition() {
+    return {.name = "vnoise", .family = OpFamily::generator,
+            .doc = "vector noise: noise at p - sigma, p, p + sigma (1989 section 2.4)",
+            .inputs = {in("p", Type::vec3)}, .outputs = {out(Type::vec3)}, .attributes = {seed_attribute()},
+            .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    frame::store_vec3(x, sem::vnoise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2)));
+  }
+};
+
+struct noise_improved {
+  static OpDef definition() {
+    return {.name = "noise_improved", .family = OpFamily::generator,
+            .doc = "Perlin 2002 improved noise with the reference permutation", .inputs = {in("p", Type::vec3)},
+            .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::noise_improved(x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
+};
+
+struct turbulence {
+  static OpDef definition() {
+    return {.name = "turbulence", .family = OpFamily::generator,
+            .doc = "sum of |noise(2^i p)| / 2^i; octaves stop where 2^-i <= filter_width (1985 appendix)",
+            .inputs = {in("p", Type::vec3), in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::turbulence(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1), x.in(2));
+  }
+};
+
+struct fbm {
+  static OpDef definition() {
+    return {.name = "fbm", .family = OpFamily::generator,
+            .doc = "fractional Brownian motion: sum of gain^i noise(lacunarity^i p), clamped at filter_width",
+            .inputs = {in("p", Type::vec3), in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("lacunarity", Type::float_, 2.0f, "frequency ratio between octaves"),
+                       in("gain", Type::float_, 0.5f, "amplitude ratio between octaves"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::fbm(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1), x.in(2), x.in(3), x.in(4));
+  }
+};
+
+struct sines {
+  static OpDef definition() {
+    return {.name = "sines", .family = OpFamily::generator,
+            .doc = "Gardner 1984 sum of sines in [0,1] (cloudy skies): product of phase-shifted sine series in x "
+                   "and y",
+            .inputs = {in("p", Type::vec3), in("frequency", Type::float_, 1.0f, "base angular frequency"),
+                       in("octaves", Type::int_, 5.0f, "terms per series, at most 16")},
+            .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::sines(x.in(0, 0), x.in(0, 1), x.in(1), x.in(2));
+  }
+};
+
+struct swave {
+  static OpDef definition() {
+    return {.name = "swave", .family = OpFamily::generator,
+            .doc = "square wave in [0,1] box-filtered analytically over filter_width (Rhoades et al. 1992)",
+            .inputs = {in("x", Type::float_),
+                       in("filter_width", Type::float_, 0.0f, "box filter width in units of x"),
+                       in("frequency", Type::float_, 1.0f, "periods per unit of x"),
+                       in("duty", Type::float_, 0.5f, "fraction of each period that is 1"),
+                       in("phase", Type::float_, 0.0f, "offset in periods")},
+            .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::swave(x.in(0), x.in(1), x.in(2), x.in(3), x.in(4));
+  }
+};
+
+struct julia {
+  static OpDef definition() {
+    return {.name = "julia", .family = OpFamily::generator,
+            .doc = "Julia set z -> z^2 + c: fraction of iterations before escape, 1 inside the set",
+            .inputs = {in("p", Type::vec2, "starting point z0"), in("c", Type::vec2, "the constant c"),
+                       in("iterations", Type::int_, 64.0f, "iteration limit, at most 1024")},
+            .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::julia(x.in(0, 0), x.in(0, 1), x.in(1, 0), x.in(1, 1), x.in(2));
+  }
+};
+
+struct checker {
+  static OpDef definition() {
+    return {.name = "checker", .family = OpFamily::generator,
+            .doc = "3D checkerboard: 1 where floor(x)+floor(y)+floor(z) is odd", .inputs = {in("p", Type::vec3)},
+            .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::checker(x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
+};
+
+}  // namespace shadetree::ops
