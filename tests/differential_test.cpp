@@ -248,6 +248,15 @@ TEST(NodeDifferential, DensityInputAgreesInVolumes) {
   EXPECT_EQ(compare_backends("density", loaded->ir, loaded->params, 16), "");
 }
 
+TEST(NodeDifferential, ScalarArgumentsSplatToTheOpsType) {
+  Result<LoadedGraph> loaded = compile_text(std::string(header) + R"("nodes": [{"id": "p", "op": "P"},
+      {"id": "d", "op": "dot", "in": {"a": 1, "b": "p"}}, {"id": "l", "op": "normalize", "in": {"v": "p"}},
+      {"id": "m", "op": "dot", "in": {"a": "l", "b": 0.5}}, {"id": "c", "op": "color", "in": {"r": "d", "g": "m"}}],
+      "outputs": {"color": "c"}})");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  EXPECT_EQ(compare_backends("splat", loaded->ir, loaded->params, 8), "");
+}
+
 // --- random well-typed graphs ---------------------------------------------
 
 // Grows a graph one node at a time from a pool of typed values, picking ops
@@ -274,16 +283,25 @@ class RandomGraph {
       if (op.generic == GenericSet::vectors) instance = pick_of({Type::vec2, Type::vec3, Type::color});
       const std::string id = "n" + std::to_string(n);
       nodes << R"(, {"id": ")" << id << R"(", "op": ")" << op.name << R"(", "in": {)";
+      std::vector<std::string> wires;
       for (std::size_t i = 0; i < op.inputs.size(); ++i) {
         const PortSpec& port = op.inputs[i];
         const Type type = port.rule == TypeRule::generic ? instance : port.type;
         // Generic inputs take exactly T, so that T is what the checker infers.
-        nodes << (i ? ", " : "") << '"' << port.name << "\": " << wire(type, port.name, port.rule == TypeRule::generic);
+        wires.push_back(wire(type, port.name, port.rule == TypeRule::generic));
+        nodes << (i ? ", " : "") << '"' << port.name << "\": " << wires.back();
       }
       nodes << "}" << attributes_for(op.id) << "}";
       Type output = op.outputs[0].rule == TypeRule::generic ? instance : op.outputs[0].type;
       if (op.id == OpId::spline || op.id == OpId::color_table) output = Type::color;
       pool_.push_back({id, output});
+      // Every other `if` is nested in one more on the same condition, the
+      // shape that once broke the interpreter's lane lists.
+      if (op.id == OpId::if_ && pick(2) == 0) {
+        nodes << R"(, {"id": ")" << id << R"(_outer", "op": "if", "in": {"cond": )" << wires[0] << R"(, "then": ")"
+              << id << R"(", "else": )" << wire(instance, "else", true) << "}}";
+        pool_.push_back({id + "_outer", output});
+      }
     }
     std::ostringstream outputs;
     for (int k = 0; k < 3; ++k) {

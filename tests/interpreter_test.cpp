@@ -6,6 +6,7 @@
 
 #include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
+#include "nodes/semantics/arithmetic.h"
 #include "nodes/semantics/noise.h"
 #include "support/graph_text.h"
 
@@ -73,6 +74,54 @@ TEST(Interpreter, IfTakesEachBranchWhereItsConditionSays) {
       ASSERT_TRUE(std::isnan(result.color[0][i])) << i;  // sqrt of a negative, as asked
     }
   }
+}
+
+// Regression: an `if` inside an `if` on the same condition opened a second
+// lane list while the first still pointed into the storage it grew
+// (a use-after-free under AddressSanitizer, wrong values or a crash in
+// release builds).
+TEST(Interpreter, NestedIfsOnOneConditionKeepTheirLaneLists) {
+  const std::size_t count = 2 * interpreter_block_size + 9;
+  const Evaluation result = evaluate(testing::graph_text(R"({"id": "p", "op": "P"},
+      {"id": "x", "op": "split", "in": {"v": "p"}},
+      {"id": "c", "op": "lt", "in": {"a": "x.x", "b": 1}},
+      {"id": "n", "op": "sin", "in": {"x": "x.x"}},
+      {"id": "inner", "op": "if", "in": {"cond": "c", "then": "n", "else": 0}},
+      {"id": "outer", "op": "if", "in": {"cond": "c", "then": "inner", "else": 1}},
+      {"id": "out", "op": "color", "in": {"r": "outer"}})",
+                                                         R"("color": "out")"),
+                                     count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const float x = result.px[i];
+    ASSERT_EQ(result.color[0][i], x < 1.0f ? semantics::sine(x) : 1.0f) << i;
+  }
+}
+
+TEST(Interpreter, DeepChainsOfNestedIfsRun) {
+  constexpr int depth = 300;
+  std::string nodes = R"({"id": "p", "op": "P"}, {"id": "x", "op": "split", "in": {"v": "p"}},
+      {"id": "c", "op": "lt", "in": {"a": "x.x", "b": 0}}, {"id": "v0", "op": "neg", "in": {"x": "x.x"}})";
+  for (int k = 1; k <= depth; ++k)
+    nodes += R"(, {"id": "v)" + std::to_string(k) + R"(", "op": "if", "in": {"cond": "c", "then": "v)" +
+             std::to_string(k - 1) + R"(", "else": )" + std::to_string(k) + "}}";
+  nodes += R"(, {"id": "out", "op": "color", "in": {"r": "v)" + std::to_string(depth) + R"("}})";
+  const std::size_t count = interpreter_block_size + 3;
+  const Evaluation result = evaluate(testing::graph_text(nodes, R"("color": "out")"), count);
+  for (std::size_t i = 0; i < count; ++i)
+    ASSERT_EQ(result.color[0][i], result.px[i] < 0.0f ? -result.px[i] : static_cast<float>(depth)) << i;
+}
+
+// Regression: dot(1, v) read the scalar as a one-component vector and
+// returned v.x instead of v.x + v.y + v.z.
+TEST(Interpreter, ScalarArgumentsOfVectorOpsAreSplatToT) {
+  const Evaluation result = evaluate(testing::graph_text(R"({"id": "v", "op": "vec3", "in": {"x": 1, "y": 2, "z": 3}},
+      {"id": "d", "op": "dot", "in": {"a": 1, "b": "v"}},
+      {"id": "e", "op": "dot", "in": {"a": "v", "b": 2}},
+      {"id": "c", "op": "color", "in": {"r": "d", "g": "e"}})",
+                                                         R"("color": "c")"),
+                                     1);
+  EXPECT_EQ(result.color[0][0], 6.0f);
+  EXPECT_EQ(result.color[1][0], 12.0f);
 }
 
 TEST(Interpreter, ParamsAreReadFromTheUniformBlock) {

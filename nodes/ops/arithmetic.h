@@ -14,13 +14,17 @@ using namespace define;
 namespace sem = semantics;
 
 // An op whose every result component is sem::function of the same
-// component of each of its `arity` arguments.
-#define SHADETREE_COMPONENTWISE_OP(name, arity, function, definition_expression)                                \
+// component of each of its `arity` arguments. `apply` is that function, so
+// a backend may also loop over components and lanes itself (the
+// interpreter does, to keep its inner loops tight).
+#define SHADETREE_COMPONENTWISE_OP(name, arity_, function, definition_expression)                               \
   struct name {                                                                                                \
+    static constexpr int arity = arity_;                                                                       \
     static OpDef definition() { return definition_expression; }                                                \
+    static auto apply(auto... arguments) { return sem::function(arguments...); }                               \
     template <class X>                                                                                         \
     static void evaluate(const X& x) {                                                                         \
-      frame::componentwise<arity>(x, [](auto... arguments) { return sem::function(arguments...); });           \
+      frame::componentwise<arity>(x, [](auto... arguments) { return apply(arguments...); });                   \
     }                                                                                                          \
   };
 
