@@ -1,4 +1,4 @@
-// shadetree emit FILE --graph | --llvm | --asm: what a graph compiles to,
+// shadetree emit FILE --graph [--after-each-pass] | --llvm | --asm: what a graph compiles to,
 // after optimization, so that a reader can check the passes and see the
 // vector instructions.
 #include <cstdio>
@@ -14,14 +14,20 @@ namespace shadetree {
 namespace {
 struct EmitArguments {
   std::string file;
-  bool graph = false, llvm = false, assembly = false;
+  bool graph = false, llvm = false, assembly = false, after_each_pass = false;
   int width = 0;
   std::vector<std::string> assignments;
 };
 
 ExitStatus emit(const EmitArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
+  PassObserver print_each_pass;
+  if (arguments.after_each_pass)
+    print_each_pass = [](const char* pass, const ShadeIR& ir) {
+      std::printf("; after %s: %zu instructions\n%s\n", pass, ir.code.size(), format_shade_ir(ir).c_str());
+    };
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass);
   if (!loaded) return report(loaded.error());
+  if (arguments.after_each_pass) return ExitStatus::ok;
   if (arguments.graph) {
     std::printf("; %s: %d instructions before optimization, %zu after\n", arguments.file.c_str(),
                 loaded->instructions_before_optimization, loaded->ir.code.size());
@@ -43,6 +49,9 @@ void add_emit_command(CLI::App& app, CommandRunner& run) {
   auto* graph = command->add_flag("--graph", arguments->graph, "the optimized ShadeIR");
   auto* llvm = command->add_flag("--llvm", arguments->llvm, "the optimized LLVM IR of the kernel");
   auto* assembly = command->add_flag("--asm", arguments->assembly, "the kernel's machine code");
+  command->add_flag("--after-each-pass", arguments->after_each_pass,
+                    "with --graph: the program after lowering and after each optimizer pass")
+      ->needs(graph);
   graph->excludes(llvm)->excludes(assembly);
   llvm->excludes(assembly);
   command->add_option("--width", arguments->width, "vector width: 4, 8 or 16 (default: the host's widest)")

@@ -77,7 +77,7 @@ ExitStatus evaluate(const EvalArguments& arguments) {
   result["uv"] = {sample.uv[0], sample.uv[1]};
   result["filter_width"] = sample.filter_width;
   for (const IrOutput& output : loaded->ir.outputs) {
-    const std::string name(output_name(loaded->ir, output));
+    const std::string name(output_id_name(output.id));
     const int components = component_count(output.type);
     if (components == 1) {
       result["outputs"][name] = values[layout.plane(output.id)];

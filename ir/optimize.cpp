@@ -7,12 +7,22 @@
 
 namespace shadetree {
 
-void optimize(ShadeIR& ir, const ConstantEvaluator& evaluate_constants) {
+void optimize(ShadeIR& ir, const ConstantEvaluator& evaluate_constants, const PassObserver& observe) {
+  auto after = [&](const char* pass) {
+    if (observe) observe(pass, ir);
+  };
   eliminate_dead_code(ir);
-  if (evaluate_constants) fold_constants(ir, evaluate_constants);
+  after("eliminate_dead_code");
+  if (evaluate_constants) {
+    fold_constants(ir, evaluate_constants);
+    after("fold_constants");
+  }
   eliminate_common_subexpressions(ir);
+  after("eliminate_common_subexpressions");
   eliminate_dead_code(ir);
+  after("eliminate_dead_code");
   place_conditional_regions(ir);
+  after("place_conditional_regions");
 }
 
 }  // namespace shadetree

@@ -19,7 +19,12 @@ namespace shadetree {
 // it, so folded values are exactly what a backend would compute).
 using ConstantEvaluator = std::function<std::vector<float>(const ShadeIR& program)>;
 
+// Called with each pass's name and the program after it: to print the
+// program after each pass (shadetree emit --graph --after-each-pass) or to
+// verify it (ir/verify.h).
+using PassObserver = std::function<void(const char* pass, const ShadeIR& ir)>;
+
 // Without an evaluator, constants are not folded.
-void optimize(ShadeIR& ir, const ConstantEvaluator& evaluate_constants);
+void optimize(ShadeIR& ir, const ConstantEvaluator& evaluate_constants, const PassObserver& observe = {});
 
 }  // namespace shadetree

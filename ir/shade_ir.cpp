@@ -28,12 +28,6 @@ Type argument_type(const IrInstr& instr, int a) {
   return port.rule == TypeRule::generic ? instr.generic : port.type;
 }
 
-std::string_view output_name(const ShadeIR& ir, const IrOutput& output) {
-  for (const OutputSpec& spec : output_contract(ir.kind))
-    if (spec.id == output.id) return spec.name;
-  return "?";
-}
-
 std::string format_shade_ir(const ShadeIR& ir) {
   std::ostringstream text;
   for (const IrParam& param : ir.params)
@@ -67,7 +61,7 @@ std::string format_shade_ir(const ShadeIR& ir) {
     if (instr.kind == IrOpKind::begin_region) ++depth;
   }
   for (const IrOutput& output : ir.outputs)
-    text << "output " << output_name(ir, output) << ": " << type_name(output.type) << " = %" << output.value << "\n";
+    text << "output " << output_id_name(output.id) << ": " << type_name(output.type) << " = %" << output.value << "\n";
   return text.str();
 }
 

@@ -12,6 +12,7 @@
 
 #include "nodes/type.h"
 #include "nodes/graph_kind.h"
+#include "nodes/limits.h"
 #include "nodes/op_id.h"
 #include "nodes/output_contract.h"
 
@@ -36,7 +37,7 @@ struct IrInstr {
   Type generic = Type::float_;  // the op's type variable T, where it has one
   bool uniform = false;  // depends only on params and constants
   std::uint8_t arg_count = 0;
-  std::array<std::int32_t, 6> args{-1, -1, -1, -1, -1, -1};
+  std::array<std::int32_t, max_op_args> args{-1, -1, -1, -1, -1, -1};
   std::int32_t data_offset = 0;  // into ShadeIR::data
   std::int32_t data_count = 0;
   std::array<std::int32_t, 2> immediate{0, 0};
@@ -74,9 +75,6 @@ void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order);
 // type in the op's signature, with T resolved. The value it names may have
 // fewer components (a scalar read splatted).
 Type argument_type(const IrInstr& instr, int a);
-
-// The name of an output, from its kind's contract.
-std::string_view output_name(const ShadeIR& ir, const IrOutput& output);
 
 // Human-readable listing, one instruction a line (shadetree emit --graph).
 std::string format_shade_ir(const ShadeIR& ir);

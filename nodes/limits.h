@@ -7,5 +7,7 @@ namespace shadetree {
 inline constexpr int max_octaves = 16;
 inline constexpr int max_julia_iterations = 1024;
 inline constexpr int max_table_entries = 4096;
+// Arguments of one op (its inputs), the width of the op ABI (op_frame.h).
+inline constexpr int max_op_args = 6;
 
 }  // namespace shadetree

@@ -18,12 +18,11 @@
 #include <utility>
 
 #include "nodes/lane_scalar.h"
+#include "nodes/limits.h"
 #include "nodes/noise_tables.h"
 #include "nodes/semantics/vec3.h"
 
 namespace shadetree {
-
-inline constexpr int max_op_args = 6;
 
 // What an instruction fixes at compile time, besides its arguments. The
 // JIT builds it as a constant LLVM struct of the same layout (see

@@ -26,6 +26,13 @@ constexpr OutputSpec volume_outputs[] = {
 
 }  // namespace
 
+std::string_view output_id_name(OutputId id) {
+  constexpr std::string_view names[] = {"color",    "alpha",    "normal", "specular", "roughness",
+                                        "opacity",  "emission", "density", "ior"};
+  static_assert(std::size(names) == output_id_count);
+  return names[static_cast<int>(id)];
+}
+
 std::span<const OutputSpec> output_contract(GraphKind kind) {
   switch (kind) {
     case GraphKind::texture: return texture_outputs;

@@ -23,6 +23,8 @@ namespace shadetree {
 enum class OutputId : std::uint8_t { color, alpha, normal, specular, roughness, opacity, emission, density, ior };
 inline constexpr int output_id_count = 9;
 
+std::string_view output_id_name(OutputId id);
+
 struct OutputSpec {
   OutputId id;
   std::string_view name;

@@ -1,8 +1,12 @@
 #include "pipeline/compile_graph.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "graph/check.h"
 #include "ir/lower.h"
 #include "ir/optimize.h"
+#include "ir/verify.h"
 #include "interp/interpreter.h"
 #include "graph/parse.h"
 
@@ -10,8 +14,24 @@ namespace shadetree {
 
 namespace {
 
+// In debug builds, a pass that breaks an invariant stops the program at
+// once, naming the pass.
+PassObserver verified_in_debug_builds(const PassObserver& observe) {
+#ifdef NDEBUG
+  return observe;
+#else
+  return [observe](const char* pass, const ShadeIR& ir) {
+    if (std::string problem = verify_shade_ir(ir); !problem.empty()) {
+      std::fprintf(stderr, "error: internal error: ShadeIR after %s: %s\n", pass, problem.c_str());
+      std::abort();
+    }
+    if (observe) observe(pass, ir);
+  };
+#endif
+}
+
 Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path,
-                                   const std::vector<std::string>& assignments) {
+                                   const std::vector<std::string>& assignments, const PassObserver& observe) {
   if (!parsed) return parsed.error();
   auto graph = std::make_shared<const Graph>(std::move(*parsed));
   Result<CheckedGraph> checked = check_graph(graph);
@@ -20,7 +40,9 @@ Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path
   if (!ir) return ir.error();
   LoadedGraph loaded{graph, std::move(*ir), {}, 0};
   loaded.instructions_before_optimization = static_cast<int>(loaded.ir.code.size());
-  optimize(loaded.ir, evaluate_constant_program);
+  const PassObserver observer = verified_in_debug_builds(observe);
+  if (observer) observer("lower", loaded.ir);
+  optimize(loaded.ir, evaluate_constant_program, observer);
   loaded.params = param_block(*graph, loaded.ir);
   for (const std::string& assignment : assignments) {
     const auto equals = assignment.find('=');
@@ -51,13 +73,14 @@ Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path
 
 }  // namespace
 
-Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments) {
-  return compile_parsed(load_graph(path), path, assignments);
+Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
+                                     const PassObserver& observe) {
+  return compile_parsed(load_graph(path), path, assignments, observe);
 }
 
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
-                                       const std::vector<std::string>& assignments) {
-  return compile_parsed(parse_graph(json, file), file, assignments);
+                                       const std::vector<std::string>& assignments, const PassObserver& observe) {
+  return compile_parsed(parse_graph(json, file), file, assignments, observe);
 }
 
 }  // namespace shadetree

@@ -8,6 +8,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "ir/optimize.h"
 #include "ir/shade_ir.h"
 
 namespace shadetree {
@@ -19,11 +20,15 @@ struct LoadedGraph {
   int instructions_before_optimization = 0;
 };
 
-// `assignments` are NAME=VALUE strings (shadetree's --set).
-Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments);
+// `assignments` are NAME=VALUE strings (shadetree's --set). `observe` sees
+// the program after lowering ("lower") and after each optimizer pass; in
+// debug builds every one of those programs is also verified (ir/verify.h).
+Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
+                                     const PassObserver& observe = {});
 
 // The same from JSON text; `file` names it in messages.
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
-                                       const std::vector<std::string>& assignments = {});
+                                       const std::vector<std::string>& assignments = {},
+                                       const PassObserver& observe = {});
 
 }  // namespace shadetree

@@ -13,6 +13,7 @@
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
 #include "interp/interpreter.h"
+#include "ir/verify.h"
 #include "jit/jit_kernel.h"
 #include "nodes/registry.h"
 
@@ -108,7 +109,13 @@ std::string compare_backends(const std::string& name, const ShadeIR& ir, const s
   return "";
 }
 
-Result<LoadedGraph> compile_text(const std::string& text) { return compile_graph_text(text, "generated.json"); }
+// Every generated program is verified after lowering and after each pass.
+Result<LoadedGraph> compile_text(const std::string& text) {
+  return compile_graph_text(text, "generated.json", {}, [&](const char* pass, const ShadeIR& ir) {
+    const std::string problem = verify_shade_ir(ir);
+    EXPECT_EQ(problem, "") << "after " << pass << "\n" << format_shade_ir(ir) << "\n" << text;
+  });
+}
 
 // --- the gallery -------------------------------------------------------
 
