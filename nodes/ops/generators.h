@@ -6,6 +6,7 @@
 
 #include "nodes/op_definition.h"
 #include "nodes/op_frame.h"
+#include "nodes/semantics/cellular.h"
 #include "nodes/semantics/noise.h"
 #include "nodes/semantics/patterns.h"
 
@@ -149,6 +150,23 @@ struct checker {
   template <class X>
   static void evaluate(const X& x) {
     x.out() = sem::checker(x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
+};
+
+struct cellular {
+  static OpDef definition() {
+    return {.name = "cellular", .family = OpFamily::generator,
+            .doc = "Worley 1996 cellular noise: distances (F1, F2) to the nearest and second-nearest feature "
+                   "points, one per unit cell",
+            .inputs = {in("p", Type::vec3),
+                       in("jitter", Type::float_, 1.0f, "0: points at cell centres, 1: anywhere in their cell")},
+            .outputs = {out(Type::vec2)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    const auto distances = sem::cellular(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1));
+    x.out(0) = distances.nearest;
+    x.out(1) = distances.second;
   }
 };
 
