@@ -10,7 +10,6 @@
 #include "graph/number_list.h"
 #include "nodes/noise_tables.h"
 #include "nodes/output_contract.h"
-#include "nodes/semantics/splines.h"
 
 namespace shadetree {
 namespace {
@@ -374,16 +373,24 @@ class Checker {
     return result;
   }
 
-  const AttributeValue* attribute(const Node& node, const OpDef& op, const std::string& name) const {
-    auto found = node.attributes.find(name);
-    if (found != node.attributes.end()) return &found->second;
-    for (const AttributeSpec& spec : op.attributes)
-      if (spec.name == name && spec.required) fail(node.id, {}, "missing attribute \"" + name + "\" (" + spec.doc + ")");
-    return nullptr;
-  }
+  // A node's attributes, read by its op's layout (nodes/attributes.h);
+  // faults are reported on the node.
+  class NodeAttributes final : public Attributes {
+   public:
+    NodeAttributes(const Checker& checker, const Node& node) : checker_(checker), node_(node) {}
+    const AttributeValue* find(const std::string& name) const override {
+      auto found = node_.attributes.find(name);
+      return found == node_.attributes.end() ? nullptr : &found->second;
+    }
+    [[noreturn]] void fail(const std::string& message) const override { checker_.fail(node_.id, {}, message); }
 
-  // Validates attribute names and values, and lays out their data for the
-  // semantics: see CheckedNode::data and immediate.
+   private:
+    const Checker& checker_;
+    const Node& node_;
+  };
+
+  // Validates attribute names and required attributes, then lays out their
+  // data for the semantics: see CheckedNode::data and immediate.
   void check_attributes(const Node& node, const OpDef& op, CheckedNode& checked) const {
     std::vector<std::string> names;
     for (const AttributeSpec& spec : op.attributes) names.push_back(spec.name);
@@ -392,112 +399,14 @@ class Checker {
         fail(node.id, {}, "unknown field \"" + name + "\" (inputs go in \"in\"; attributes of " + op.name + ": " +
                               join_names(names) + ")");
     }
-    if (op.tables == OpTables::noise) {
-      checked.immediate[0] = static_cast<std::int32_t>(default_noise_seed);
-      if (const AttributeValue* seed = attribute(node, op, "seed")) {
-        if (seed->kind != AttributeValue::Kind::number || seed->number != std::floor(seed->number) ||
-            seed->number < 0 || seed->number > 4294967295.0)
-          fail(node.id, {}, "attribute \"seed\" must be an integer in [0, 4294967295]");
-        checked.immediate[0] = static_cast<std::int32_t>(static_cast<std::uint32_t>(seed->number));
-      }
-    }
-    switch (op.id) {
-      case OpId::spline: {
-        int basis = 0;
-        if (const AttributeValue* value = attribute(node, op, "basis")) {
-          const auto& choices = op.attributes[1].choices;
-          auto found = value->kind == AttributeValue::Kind::text
-                           ? std::find(choices.begin(), choices.end(), value->text)
-                           : choices.end();
-          if (found == choices.end())
-            fail(node.id, {}, "attribute \"basis\" must be one of: " + join_names(choices));
-          basis = static_cast<int>(found - choices.begin());
-        }
-        const int minimum = basis == static_cast<int>(semantics::SplineBasis::catmull_rom) ? 4
-                            : basis == static_cast<int>(semantics::SplineBasis::linear) ? 2
-                                                                                         : 1;
-        const int components = knot_list(node, *attribute(node, op, "knots"), "knots", minimum, checked);
-        checked.immediate[0] = components;
-        checked.immediate[1] = basis;
-        checked.generic_type = type_of_knots(components);
-        break;
-      }
-      case OpId::color_table: {
-        const int components = knot_list(node, *attribute(node, op, "entries"), "entries", 1, checked);
-        const int count = static_cast<int>(checked.data.size()) / components;
-        // Prefix sums follow the entries: prefix[k] = sum of the first k.
-        std::vector<float> prefix(static_cast<std::size_t>((count + 1) * components), 0.0f);
-        for (int k = 0; k < count; ++k)
-          for (int c = 0; c < components; ++c)
-            prefix[(k + 1) * components + c] = prefix[k * components + c] + checked.data[k * components + c];
-        checked.data.insert(checked.data.end(), prefix.begin(), prefix.end());
-        checked.immediate[0] = components;
-        checked.immediate[1] = count;
-        checked.generic_type = type_of_knots(components);
-        break;
-      }
-      case OpId::table1d: {
-        float domain[2] = {0.0f, 1.0f};
-        if (const AttributeValue* value = attribute(node, op, "domain")) {
-          if (value->kind != AttributeValue::Kind::list || value->items.size() != 2 || value->items_are_arrays ||
-              value->items[0][0] == value->items[1][0])
-            fail(node.id, {}, "attribute \"domain\" must be [lo, hi] with lo != hi");
-          domain[0] = value->items[0][0];
-          domain[1] = value->items[1][0];
-        }
-        std::vector<float> values;
-        const int components = knot_list(node, *attribute(node, op, "values"), "values", 1, checked);
-        if (components != 1) fail(node.id, {}, "attribute \"values\" must be a list of numbers");
-        values.swap(checked.data);
-        checked.data = {domain[0], domain[1]};
-        checked.data.insert(checked.data.end(), values.begin(), values.end());
-        checked.immediate[0] = static_cast<int>(values.size());
-        break;
-      }
-      case OpId::table2d: {
-        const AttributeValue& value = *attribute(node, op, "values");
-        if (value.kind != AttributeValue::Kind::list || value.items.empty() || !value.items_are_arrays)
-          fail(node.id, {}, "attribute \"values\" must be a list of rows, each a list of numbers");
-        const std::size_t columns = value.items[0].size();
-        if (columns == 0 || value.items.size() * columns > static_cast<std::size_t>(max_table_entries))
-          fail(node.id, {}, "attribute \"values\" must have 1 to " + std::to_string(max_table_entries) + " entries");
-        for (const auto& row : value.items) {
-          if (row.size() != columns) fail(node.id, {}, "attribute \"values\": all rows must have the same length");
-          checked.data.insert(checked.data.end(), row.begin(), row.end());
-        }
-        checked.immediate[0] = static_cast<int>(value.items.size());
-        checked.immediate[1] = static_cast<int>(columns);
-        break;
-      }
-      default:
-        break;
-    }
-  }
-
-  static Type type_of_knots(int components) {
-    return components == 1 ? Type::float_ : components == 2 ? Type::vec2 : Type::color;
-  }
-
-  // Appends a list of equally sized values to checked.data; returns their
-  // component count.
-  int knot_list(const Node& node, const AttributeValue& value, const std::string& name, int minimum,
-                CheckedNode& checked) const {
-    if (value.kind != AttributeValue::Kind::list)
-      fail(node.id, {}, "attribute \"" + name + "\" must be a list of numbers or of [r, g, b] arrays");
-    if (static_cast<int>(value.items.size()) < minimum ||
-        value.items.size() > static_cast<std::size_t>(max_table_entries))
-      fail(node.id, {}, "attribute \"" + name + "\" needs " + std::to_string(minimum) + " to " +
-                            std::to_string(max_table_entries) + " values, got " +
-                            std::to_string(value.items.size()));
-    const std::size_t components = value.items[0].size();
-    if (components < 1 || components > 3)
-      fail(node.id, {}, "attribute \"" + name + "\" values must be numbers or arrays of 2 or 3 numbers");
-    for (const auto& item : value.items) {
-      if (item.size() != components)
-        fail(node.id, {}, "attribute \"" + name + "\" values must all have the same number of components");
-      checked.data.insert(checked.data.end(), item.begin(), item.end());
-    }
-    return static_cast<int>(components);
+    for (const AttributeSpec& spec : op.attributes)
+      if (spec.required && !node.attributes.contains(spec.name))
+        fail(node.id, {}, "missing attribute \"" + spec.name + "\" (" + spec.doc + ")");
+    AttributeLayout layout = lay_out_attributes(op, NodeAttributes(*this, node));
+    checked.data = std::move(layout.data);
+    checked.immediate[0] = layout.immediate[0];
+    checked.immediate[1] = layout.immediate[1];
+    if (layout.generic) checked.generic_type = *layout.generic;
   }
 
   // Octave and iteration counts given as literals or params must respect

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/attributes.h"
 #include "nodes/graph_kind.h"
 #include "nodes/type.h"
 
@@ -25,16 +26,6 @@ struct InputValue {
   std::vector<float> numbers;  // number (1), array (2 or 3) or boolean (0/1)
   bool integral = false;       // Kind::number: written without a fraction
   std::string text;            // as written, for messages
-};
-
-// A compile-time attribute of a node (spline knots, noise seed, ...):
-// a number, a string, or a list whose items are numbers or number arrays.
-struct AttributeValue {
-  enum class Kind { number, text, list } kind = Kind::number;
-  double number = 0;
-  std::string text;
-  std::vector<std::vector<float>> items;
-  bool items_are_arrays = false;
 };
 
 struct Node {

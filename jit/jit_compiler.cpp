@@ -108,7 +108,8 @@ std::filesystem::path cache_folder(const JitSettings& settings) {
 class DiskObjectCache final : public llvm::ObjectCache {
  public:
   void notifyObjectCompiled(const llvm::Module* module, llvm::MemoryBufferRef object) override {
-    if (folder_.empty()) return;
+    // Only kernels: LLJIT compiles modules of its own too (__standard_lib).
+    if (folder_.empty() || !module->getModuleIdentifier().starts_with("shade_kernel_")) return;
     std::error_code error;
     std::filesystem::create_directories(folder_, error);
     const auto target = folder_ / (module->getModuleIdentifier() + ".o");

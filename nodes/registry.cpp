@@ -14,10 +14,17 @@ OpDef input_op(const GlobalDef& global) {
           .outputs = {define::out(global.type)}, .kinds = global.kinds};
 }
 
+template <class Op>
+OpDef definition_of() {
+  OpDef definition = Op::definition();
+  if constexpr (requires { &Op::lay_out; }) definition.lay_out = &Op::lay_out;
+  return definition;
+}
+
 std::vector<OpDef> make_ops() {
   std::vector<OpDef> ops;
   for (const GlobalDef& global : globals) ops.push_back(input_op(global));
-#define SHADETREE_DEFINITION(name) ops.push_back(ops::name::definition());
+#define SHADETREE_DEFINITION(name) ops.push_back(definition_of<ops::name>());
   SHADETREE_LIBRARY_OPS(SHADETREE_DEFINITION)
 #undef SHADETREE_DEFINITION
   for (std::size_t i = 0; i < ops.size(); ++i) ops[i].id = static_cast<OpId>(i);

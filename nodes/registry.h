@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "nodes/attributes.h"
 #include "nodes/globals.h"
 #include "nodes/graph_kind.h"
 #include "nodes/type.h"
@@ -83,6 +84,9 @@ struct OpDef {
   // (numbers -> float, 2-arrays -> vec2, 3-arrays -> color).
   bool type_from_knots = false;
   KindSet kinds = every_kind;  // the graph kinds the op may be used in
+  // Lays out the op's attributes (besides the seed of noise ops); set by
+  // the registry from the op's `lay_out`, where it has one.
+  void (*lay_out)(const Attributes& attributes, AttributeLayout& layout) = nullptr;
 };
 
 std::span<const OpDef> all_ops();

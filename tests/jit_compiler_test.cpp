@@ -89,8 +89,12 @@ TEST(JitCompiler, CompiledObjectsGoToTheDiskCache) {
   Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 4, JitSettings{true, folder.string(), false, std::nullopt});
   ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
   std::size_t objects = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) objects += entry.path().extension() == ".o";
-  EXPECT_EQ(objects, 1u);
+  std::string names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    objects += entry.path().extension() == ".o";
+    names += entry.path().filename().string() + " ";
+  }
+  EXPECT_EQ(objects, 1u) << names;
   std::filesystem::remove_all(folder);
 }
 

@@ -1,6 +1,7 @@
-// Splines and tables over attribute data laid out by the checker
-// (graph/check.cpp). Each op: its definition and its semantics over a frame
-// (see nodes/op_frame.h); the formulas are in nodes/semantics/splines.h.
+// Splines and tables over constant data from their attributes. Each op:
+// its definition, the layout of its attributes (nodes/attributes.h) and its
+// semantics over a frame (nodes/op_frame.h); the formulas are in
+// nodes/semantics/splines.h.
 #pragma once
 
 #include "nodes/op_definition.h"
@@ -12,6 +13,9 @@ namespace shadetree::ops {
 using namespace define;
 namespace sem = semantics;
 
+// In the order of semantics::SplineBasis.
+inline const std::vector<std::string> spline_bases = {"catmull-rom", "linear", "step"};
+
 // data: count knots of `components` values each; immediates: components, basis.
 struct spline {
   static OpDef definition() {
@@ -20,9 +24,17 @@ struct spline {
             .generic = GenericSet::numeric, .inputs = {in("x", Type::float_)}, .outputs = {generic_out()},
             .attributes = {{"knots", AttributeKind::value_list, true, {},
                             "knot values: numbers, or [r,g,b] / [x,y] arrays"},
-                           {"basis", AttributeKind::choice, false, {"catmull-rom", "linear", "step"},
+                           {"basis", AttributeKind::choice, false, spline_bases,
                             "catmull-rom (needs 4 knots, passes through the inner ones), linear or step"}},
             .type_from_knots = true};
+  }
+  static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
+    const auto basis = static_cast<sem::SplineBasis>(attributes.choice("basis", spline_bases));
+    const int minimum = basis == sem::SplineBasis::catmull_rom ? 4 : basis == sem::SplineBasis::linear ? 2 : 1;
+    const int components = attributes.value_list("knots", minimum, layout.data);
+    layout.immediate[0] = components;
+    layout.immediate[1] = static_cast<int>(basis);
+    layout.generic = type_of_knots(components);
   }
   template <class X>
   static void evaluate(const X& x) {
@@ -48,6 +60,19 @@ struct color_table {
                             "table entries: numbers or [r,g,b] arrays"}},
             .type_from_knots = true};
   }
+  static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
+    const int components = attributes.value_list("entries", 1, layout.data);
+    const int count = static_cast<int>(layout.data.size()) / components;
+    // Prefix sums follow the entries: prefix[k] = sum of the first k.
+    std::vector<float> prefix(static_cast<std::size_t>((count + 1) * components), 0.0f);
+    for (int k = 0; k < count; ++k)
+      for (int c = 0; c < components; ++c)
+        prefix[(k + 1) * components + c] = prefix[k * components + c] + layout.data[k * components + c];
+    layout.data.insert(layout.data.end(), prefix.begin(), prefix.end());
+    layout.immediate[0] = components;
+    layout.immediate[1] = count;
+    layout.generic = type_of_knots(components);
+  }
   template <class X>
   static void evaluate(const X& x) {
     const int components = x.immediate(0), count = x.immediate(1);
@@ -68,6 +93,14 @@ struct table1d {
                            {"domain", AttributeKind::number_pair, false, {},
                             "[lo, hi] range of x covered (default [0,1])"}}};
   }
+  static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
+    const auto [lo, hi] = attributes.number_pair("domain", {0.0f, 1.0f});
+    std::vector<float> values;
+    if (attributes.value_list("values", 1, values) != 1) attributes.fail("attribute \"values\" must be a list of numbers");
+    layout.data = {lo, hi};
+    layout.data.insert(layout.data.end(), values.begin(), values.end());
+    layout.immediate[0] = static_cast<int>(values.size());
+  }
   template <class X>
   static void evaluate(const X& x) {
     x.out() = sem::table1d(x.data(), x.immediate(0), x.in(0));
@@ -83,6 +116,11 @@ struct table2d {
                        in("y", Type::float_, "row coordinate in [0,1]")},
             .outputs = {out(Type::float_)},
             .attributes = {{"values", AttributeKind::number_grid, true, {}, "rows of control values, row 0 at y = 0"}}};
+  }
+  static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
+    const auto [rows, columns] = attributes.number_grid("values", layout.data);
+    layout.immediate[0] = rows;
+    layout.immediate[1] = columns;
   }
   template <class X>
   static void evaluate(const X& x) {
