@@ -59,8 +59,8 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Tex
   std::vector<float*> outputs;
   for (std::size_t p = 0; p < samples.output_planes; ++p) outputs.push_back(output_storage.data() + p * samples.count);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
   auto run_once = [&] {
-    ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), (samples.count + chunk - 1) / chunk, [&](std::size_t c) {
         const std::size_t start = c * chunk, count = std::min(chunk, samples.count - start);

@@ -53,6 +53,24 @@ TEST(JitCompiler, IfBranchesAreRegionsSkippedWhenNoLaneTakesThem) {
   EXPECT_NE(ir->find("label %after_region2, label %region1"), std::string::npos);
 }
 
+// Regression: a global with a constructor in the op library's headers (a
+// std::vector of spline basis names) was compiled into every kernel, with
+// its initializer, and made LLJIT build a module of its own for it.
+TEST(JitCompiler, KernelsHoldOnlyTheirTwoFunctions) {
+  Result<LoadedGraph> loaded = compile_graph_text(
+      testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
+         {"id": "c", "op": "spline", "in": {"x": "s.x"}, "knots": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})",
+                          R"("color": "c")"),
+      "spline.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+  int functions = 0;
+  for (std::size_t at = ir->find("\ndefine "); at != std::string::npos; at = ir->find("\ndefine ", at + 1)) ++functions;
+  EXPECT_EQ(functions, 2) << *ir;
+  EXPECT_EQ(ir->find("global_ctors"), std::string::npos);
+}
+
 TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
   Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
   ASSERT_TRUE(loaded.ok());

@@ -13,8 +13,9 @@ namespace shadetree::ops {
 using namespace define;
 namespace sem = semantics;
 
-// In the order of semantics::SplineBasis.
-inline const std::vector<std::string> spline_bases = {"catmull-rom", "linear", "step"};
+// In the order of semantics::SplineBasis. A function, not a global: a
+// global with a constructor would be compiled into every JIT kernel.
+inline std::vector<std::string> spline_bases() { return {"catmull-rom", "linear", "step"}; }
 
 // data: count knots of `components` values each; immediates: components, basis.
 struct spline {
@@ -24,12 +25,12 @@ struct spline {
             .generic = GenericSet::numeric, .inputs = {in("x", Type::float_)}, .outputs = {generic_out()},
             .attributes = {{"knots", AttributeKind::value_list, true, {},
                             "knot values: numbers, or [r,g,b] / [x,y] arrays"},
-                           {"basis", AttributeKind::choice, false, spline_bases,
+                           {"basis", AttributeKind::choice, false, spline_bases(),
                             "catmull-rom (needs 4 knots, passes through the inner ones), linear or step"}},
             .type_from_knots = true};
   }
   static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
-    const auto basis = static_cast<sem::SplineBasis>(attributes.choice("basis", spline_bases));
+    const auto basis = static_cast<sem::SplineBasis>(attributes.choice("basis", spline_bases()));
     const int minimum = basis == sem::SplineBasis::catmull_rom ? 4 : basis == sem::SplineBasis::linear ? 2 : 1;
     const int components = attributes.value_list("knots", minimum, layout.data);
     layout.immediate[0] = components;
