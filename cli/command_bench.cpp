@@ -36,7 +36,6 @@ struct BenchArguments {
 struct Samples {
   std::size_t count = 0;
   SampleBuffers input{0, {}};
-  std::size_t output_planes = 0;
 };
 
 Samples make_samples(const TextureView& view, const Kernel& kernel) {
@@ -47,7 +46,6 @@ Samples make_samples(const TextureView& view, const Kernel& kernel) {
     for (int column = 0; column < view.width; ++column)
       store_texture_sample(samples.input, static_cast<std::size_t>(row) * view.width + column,
                            texture_sample_at_pixel(view, column, row));
-  samples.output_planes = static_cast<std::size_t>(kernel.outputs().plane_count);
   return samples;
 }
 
@@ -55,9 +53,8 @@ Samples make_samples(const TextureView& view, const Kernel& kernel) {
 double measure(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                const Samples& samples, int threads, int repetitions) {
   constexpr std::size_t chunk = 4096;
-  std::vector<float> output_storage(samples.output_planes * samples.count);
-  std::vector<float*> outputs;
-  for (std::size_t p = 0; p < samples.output_planes; ++p) outputs.push_back(output_storage.data() + p * samples.count);
+  OutputBuffers output_buffers(samples.count, kernel.outputs());
+  const std::vector<float*> outputs(output_buffers.planes(), output_buffers.planes() + kernel.outputs().plane_count);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
   auto run_once = [&] {

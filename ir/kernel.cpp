@@ -23,13 +23,24 @@ std::vector<int> varying_planes(const GlobalSet& read) {
   return planes;
 }
 
+std::size_t plane_stride(std::size_t count) {
+  constexpr std::size_t line = 16;  // floats in a 64-byte cache line
+  return (count + line - 1) / line * line + line;
+}
+
 SampleBuffers::SampleBuffers(std::size_t count, const GlobalSet& stored) : count_(count), stored_(stored) {
   std::size_t planes = 0;
   for (const GlobalDef& global : globals) {
     if (global.variability != Variability::varying || !has(global.id)) continue;
-    for (int c = 0; c < global.components; ++c) offset_[global.first + c] = count * planes++;
+    for (int c = 0; c < global.components; ++c) offset_[global.first + c] = plane_stride(count) * planes++;
   }
-  storage_.assign(count * planes, 0.0f);
+  storage_.assign(plane_stride(count) * planes, 0.0f);
+}
+
+OutputBuffers::OutputBuffers(std::size_t count, const OutputLayout& layout)
+    : storage_(plane_stride(count) * static_cast<std::size_t>(layout.plane_count)) {
+  for (int p = 0; p < layout.plane_count; ++p)
+    planes_.push_back(storage_.data() + plane_stride(count) * static_cast<std::size_t>(p));
 }
 
 SampleInputs SampleBuffers::inputs() const {

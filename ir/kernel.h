@@ -47,6 +47,12 @@ struct UniformInputs {
 GlobalSet globals_read(const ShadeIR& ir);
 std::vector<int> varying_planes(const GlobalSet& read);
 
+// Floats from the start of one plane to the next in the buffers below:
+// `count` rounded up to a cache line, plus one line. Planes a power of two
+// apart map to the same cache sets and alias each other's stores; staggered
+// by a line, a kernel streaming a dozen planes keeps them all in cache.
+std::size_t plane_stride(std::size_t count);
+
 // Zero-filled planes for the varying globals in `stored`, `count` samples
 // each. Drivers fill the planes of the globals the program reads
 // (has() says which) and hand out inputs().
@@ -81,6 +87,19 @@ struct OutputLayout {
 };
 
 OutputLayout output_layout(const ShadeIR& ir);
+
+// Planes for every output of a layout, `count` samples each.
+class OutputBuffers {
+ public:
+  OutputBuffers(std::size_t count, const OutputLayout& layout);
+
+  float* const* planes() { return planes_.data(); }
+  const float* plane(int index) const { return planes_[static_cast<std::size_t>(index)]; }
+
+ private:
+  std::vector<float> storage_;
+  std::vector<float*> planes_;
+};
 
 // The planes of the outputs a program provides, in layout order.
 std::vector<int> provided_planes(const OutputLayout& layout);

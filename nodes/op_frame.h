@@ -81,12 +81,25 @@ using LaneOf = typename X::Lane;
 // Helpers for writing semantics over frames.
 namespace frame {
 
+// body(c) for each of `count` (1 to 3) components. Not a loop: the op
+// library is optimized by clang before a kernel fixes `count`, and a loop
+// over an unknown count leaves loop structure that the kernel's optimizer
+// does not entirely undo once the count is a constant; guarded calls fold
+// to straight-line code.
+template <class Body>
+void for_components(int count, Body body) {
+  body(0);
+  if (count > 1) body(1);
+  if (count > 2) body(2);
+}
+
 // out[c] = f(in(0, c), ..., in(Arity - 1, c)) for each result component.
 template <int Arity, class X, class Function>
 void componentwise(const X& x, Function f) {
-  for (int c = 0; c < x.components(); ++c)
+  for_components(x.components(), [&](int c) {
     [&]<int... A>(std::integer_sequence<int, A...>) { x.out(c) = f(x.in(A, c)...); }(
         std::make_integer_sequence<int, Arity>{});
+  });
 }
 
 template <class X>
@@ -114,7 +127,7 @@ auto loaded(F value) {
 // Argument a as an array of its declared components.
 template <class X>
 void to_array(const X& x, int a, LaneOf<X> (&out)[3]) {
-  for (int c = 0; c < x.arg_components(a); ++c) out[c] = x.in(a, c);
+  for_components(x.arg_components(a), [&](int c) { out[c] = x.in(a, c); });
 }
 
 }  // namespace frame

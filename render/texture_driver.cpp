@@ -99,19 +99,16 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
         store_texture_sample(input, static_cast<std::size_t>(y) * w + x, texture_sample_at_pixel(view, x0 + x, y0 + y));
-    std::vector<float> output_storage(count * static_cast<std::size_t>(layout.plane_count));
-    std::vector<float*> outputs;
-    for (int p = 0; p < layout.plane_count; ++p)
-      outputs.push_back(output_storage.data() + count * static_cast<std::size_t>(p));
-    bindings.local().run(input.inputs(), outputs.data(), count);
+    OutputBuffers outputs(count, layout);
+    bindings.local().run(input.inputs(), outputs.planes(), count);
 
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         float* pixel = image.pixels.data() +
                        (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
-        for (int c = 0; c < 3; ++c) pixel[c] = outputs[layout.plane(OutputId::color, c)][i];
-        if (alpha) pixel[3] = outputs[layout.plane(OutputId::alpha)][i];
+        for (int c = 0; c < 3; ++c) pixel[c] = outputs.plane(layout.plane(OutputId::color, c))[i];
+        if (alpha) pixel[3] = outputs.plane(layout.plane(OutputId::alpha))[i];
       }
     }
     const int done = ++tiles_done;

@@ -65,7 +65,7 @@ struct choose {
   template <class X>
   static void evaluate(const X& x) {
     const auto condition = frame::loaded(x.in(0));
-    for (int c = 0; c < x.components(); ++c) x.out(c) = lanes::select(condition, x.in(1, c), x.in(2, c));
+    frame::for_components(x.components(), [&](int c) { x.out(c) = lanes::select(condition, x.in(1, c), x.in(2, c)); });
   }
 };
 

@@ -41,8 +41,9 @@ struct spline {
   static void evaluate(const X& x) {
     const int components = x.immediate(0);
     const auto basis = static_cast<sem::SplineBasis>(x.immediate(1));
-    for (int c = 0; c < components; ++c)
+    frame::for_components(components, [&](int c) {
       x.out(c) = sem::spline(x.data(), x.data_count() / components, components, c, basis, x.in(0));
+    });
   }
 };
 
@@ -78,8 +79,9 @@ struct color_table {
   static void evaluate(const X& x) {
     const int components = x.immediate(0), count = x.immediate(1);
     const float* prefix = x.data() + count * components;
-    for (int c = 0; c < components; ++c)
+    frame::for_components(components, [&](int c) {
       x.out(c) = sem::color_table(x.data(), prefix, count, components, c, x.in(0), x.in(1));
+    });
   }
 };
 

@@ -65,7 +65,7 @@ struct normalize {
     LaneOf<X> v[3], normalized[3];
     frame::to_array(x, 0, v);
     sem::normalize_n(v, x.components(), normalized);
-    for (int c = 0; c < x.components(); ++c) x.out(c) = normalized[c];
+    frame::for_components(x.components(), [&](int c) { x.out(c) = normalized[c]; });
   }
 };
 
@@ -81,7 +81,7 @@ struct split {
 struct from_components {
   template <class X>
   static void evaluate(const X& x) {
-    for (int c = 0; c < x.components(); ++c) x.out(c) = x.in(c);
+    frame::for_components(x.components(), [&](int c) { x.out(c) = x.in(c); });
   }
 };
 
@@ -112,7 +112,7 @@ struct color : from_components {
 struct same_components {
   template <class X>
   static void evaluate(const X& x) {
-    for (int c = 0; c < x.components(); ++c) x.out(c) = x.in(0, c);
+    frame::for_components(x.components(), [&](int c) { x.out(c) = x.in(0, c); });
   }
 };
 
