@@ -1,6 +1,33 @@
 #include "graph/diagnostic.h"
 
 namespace shadetree {
+namespace {
+
+// Names and messages echo what the user wrote; a newline in a node id must
+// not split the line, nor a NUL end it.
+std::string escaped(const std::string& text) {
+  std::string result;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      result += "\\n";
+    } else if (c == '\t') {
+      result += "\\t";
+    } else if (c == '\r') {
+      result += "\\r";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      constexpr char hex[] = "0123456789abcdef";
+      result += "\\x";
+      result += hex[byte >> 4];
+      result += hex[byte & 15];
+    } else {
+      result += c;
+    }
+  }
+  return result;
+}
+
+}  // namespace
 
 std::string Diagnostic::to_string() const {
   std::string line = "error: ";
@@ -12,7 +39,7 @@ std::string Diagnostic::to_string() const {
     line += ": ";
   }
   line += message;
-  return line;
+  return escaped(line);
 }
 
 Diagnostic invalid_input(std::string message) {

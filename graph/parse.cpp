@@ -216,7 +216,7 @@ class Parser {
         if (key == "in") {
           if (!value.is_object()) fail(node.id, {}, "field \"in\" must be an object of input: value");
           for (const auto& [input, input_value] : value.items())
-            node.inputs.emplace_back(input, parse_input_value(input_value, node.id, input));
+            node.inputs.emplace_back(input, parse_input_value(input_value, node.id, input, "input \"" + input + "\""));
         } else {
           node.attributes[key] = parse_attribute(value, node.id, key);
         }
@@ -226,17 +226,26 @@ class Parser {
     return result;
   }
 
-  InputValue parse_input_value(const json& value, const std::string& node, const std::string& input) const {
+  [[noreturn]] void fail_at(const std::string& node, const std::string& input, const std::string& what,
+                            const std::string& message) const {
+    if (input.empty()) fail(node, {}, what + ": " + message);
+    fail(node, input, message);
+  }
+
+  // A node input (`input` names it) or a graph or function output (`input`
+  // is empty and `what` names it, e.g. output "color").
+  InputValue parse_input_value(const json& value, const std::string& node, const std::string& input,
+                               const std::string& what) const {
     InputValue result;
     result.text = value.dump();
     if (value.is_string()) {
       const std::string text = value.get<std::string>();
       result.text = text;
-      if (text.empty()) fail(node, input, "empty reference");
+      if (text.empty()) fail_at(node, input, what, "empty reference");
       if (text[0] == '$') {
         result.kind = InputValue::Kind::dollar;
         result.name = text.substr(1);
-        if (result.name.empty()) fail(node, input, "\"$\" must be followed by a param name");
+        if (result.name.empty()) fail_at(node, input, what, "\"$\" must be followed by a param name");
         return result;
       }
       result.kind = InputValue::Kind::node;
@@ -244,7 +253,7 @@ class Parser {
       result.node = text.substr(0, dot);
       if (dot != std::string::npos) result.output = text.substr(dot + 1);
       if (result.node.empty() || (dot != std::string::npos && result.output.empty()))
-        fail(node, input, "malformed reference \"" + text + "\" (write \"id\" or \"id.output\")");
+        fail_at(node, input, what, "malformed reference \"" + text + "\" (write \"id\" or \"id.output\")");
       return result;
     }
     if (value.is_boolean()) {
@@ -254,15 +263,15 @@ class Parser {
     }
     if (value.is_number()) {
       result.kind = InputValue::Kind::number;
-      result.numbers = {number(value, node, "input \"" + input + "\"")};
+      result.numbers = {number(value, node, what)};
       result.integral = value.is_number_integer() || result.numbers[0] == std::floor(result.numbers[0]);
       return result;
     }
     if (value.is_array() && (value.size() == 2 || value.size() == 3)) {
       result.kind = InputValue::Kind::array;
       for (const json& item : value) {
-        if (!item.is_number()) fail(node, input, "array literals hold numbers only, got " + value.dump());
-        result.numbers.push_back(number(item, node, "input \"" + input + "\""));
+        if (!item.is_number()) fail_at(node, input, what, "array literals hold numbers only, got " + value.dump());
+        result.numbers.push_back(number(item, node, what));
       }
       return result;
     }
@@ -304,7 +313,7 @@ class Parser {
       fail({}, {}, scope + "field \"outputs\" must be a non-empty object of name: node id");
     std::vector<OutputDecl> result;
     for (const auto& [name, value] : outputs.items())
-      result.push_back({name, parse_input_value(value, {}, scope + "output " + name)});
+      result.push_back({name, parse_input_value(value, {}, {}, scope + "output \"" + name + "\"")});
     return result;
   }
 
@@ -363,10 +372,11 @@ Result<Graph> parse_graph(const std::string& json_text, const std::string& file)
   } catch (const TooDeep&) {
     return Diagnostic{ExitStatus::invalid_input, file, {}, {},
                       "JSON nested deeper than " + std::to_string(max_json_depth) + " levels"};
-  } catch (const json::parse_error& error) {
+  } catch (const json::exception& error) {
+    // A syntax error, or a number beyond double range ("1e400").
     std::string reason = error.what();
-    const auto start = reason.find("parse error");
-    if (start != std::string::npos) reason = reason.substr(start);
+    const auto start = reason.find("] ");
+    if (start != std::string::npos) reason = reason.substr(start + 2);
     return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "invalid JSON: " + reason};
   }
   try {

@@ -33,6 +33,24 @@ TEST(Check, ReportsInvalidJsonWithItsPosition) {
   EXPECT_EQ(diagnose("{\"format\": }").rfind("error: g.json: invalid JSON: parse error at line 1, column 12", 0), 0u);
 }
 
+// Regression: a number beyond double range was an internal error (exit 1,
+// no file name).
+TEST(Check, ReportsNumbersOutOfRangeAsInvalidJson) {
+  for (const char* number : {"1e400", "-1e309"})
+    EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", std::string(R"("color": )") + number)),
+              std::string("error: g.json: invalid JSON: number overflow parsing '") + number + "'");
+  EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": 1e39)")),
+            "error: g.json: output \"color\" is out of the range of a 32-bit float");
+}
+
+// Regression: ids were echoed raw, so a newline split the error line and a
+// NUL cut it short.
+TEST(Check, EscapesControlCharactersInMessages) {
+  const std::string message = diagnose(graph_text(R"({"id": "a\nb\u0000c\t", "op": "nois"})", color_out));
+  EXPECT_EQ(message, R"(error: g.json: node "a\nb\x00c\t": unknown op "nois" (see `shadetree nodes` for the library))");
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+}
+
 TEST(Check, ReportsWrongFormatAndNewerVersions) {
   EXPECT_EQ(diagnose(R"({"format": "x", "version": 1})"),
             "error: g.json: field \"format\" must be \"shadetree-graph\", got \"x\"");
