@@ -1,0 +1,82 @@
+// libFuzzer harness: any bytes through the whole front of the pipeline
+// (parse, check, lower, every optimizer pass with the ShadeIR verifier
+// after each), then the interpreter on a handful of samples, and for one
+// input in eight that compiles to a small program, the JIT, whose results
+// must equal the interpreter's bit for bit. Every diagnostic must be one
+// line. Built by scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "interp/interpreter.h"
+#include "ir/verify.h"
+#include "jit/jit_kernel.h"
+#include "pipeline/compile_graph.h"
+
+namespace shadetree {
+namespace {
+
+[[noreturn]] void fault(const std::string& what) {
+  std::fprintf(stderr, "fuzz: %s\n", what.c_str());
+  std::abort();
+}
+
+constexpr std::size_t sample_count = 19;  // two JIT vectors and a tail
+
+struct Samples {
+  SampleBuffers input{sample_count, GlobalSet().set()};
+  UniformInputs uniforms;
+
+  Samples() {
+    for (const GlobalDef& global : globals)
+      for (int c = 0; c < global.components; ++c) {
+        if (global.variability == Variability::uniform) {
+          uniforms.set(global.id, 0.5f + static_cast<float>(c), c);
+          continue;
+        }
+        for (std::size_t i = 0; i < sample_count; ++i)
+          input.plane(global.id, c)[i] = static_cast<float>(i) * 0.37f - 3.0f + static_cast<float>(c);
+      }
+  }
+};
+
+std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params, Samples& samples) {
+  OutputBuffers outputs(sample_count, kernel.outputs());
+  kernel.bind(params.data(), samples.uniforms)->run(samples.input.inputs(), outputs.planes(), sample_count);
+  std::vector<std::vector<float>> values;
+  for (int p : provided_planes(kernel.outputs()))
+    values.emplace_back(outputs.plane(p), outputs.plane(p) + sample_count);
+  return values;
+}
+
+}  // namespace
+}  // namespace shadetree
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace shadetree;
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  Result<LoadedGraph> loaded = compile_graph_text(text, "fuzz.json", {}, [](const char* pass, const ShadeIR& ir) {
+    if (std::string problem = verify_shade_ir(ir); !problem.empty()) fault(std::string("after ") + pass + ": " + problem);
+  });
+  if (!loaded) {
+    const std::string line = loaded.error().to_string();
+    if (line.find('\n') != std::string::npos || line.find('\0') != std::string::npos) fault("diagnostic of several lines");
+    return 0;
+  }
+  static Samples samples;
+  const auto reference = run(*make_interpreted_kernel(loaded->ir), loaded->params, samples);
+  if (std::hash<std::string>{}(text) % 8 != 0 || loaded->ir.code.size() > 60) return 0;
+  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 8, JitSettings{false, {}, false, std::nullopt});
+  if (!jit) fault("JIT failed: " + jit.error().to_string());
+  const auto compiled = run(**jit, loaded->params, samples);
+  for (std::size_t p = 0; p < reference.size(); ++p)
+    for (std::size_t i = 0; i < sample_count; ++i) {
+      const float a = reference[p][i], b = compiled[p][i];
+      if (!(a == b || (std::isnan(a) && std::isnan(b))))
+        fault("backends disagree on plane " + std::to_string(p) + " sample " + std::to_string(i) + ": " +
+              std::to_string(a) + " vs " + std::to_string(b));
+    }
+  return 0;
+}

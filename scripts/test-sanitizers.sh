@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds shadetree with AddressSanitizer and UndefinedBehaviorSanitizer
+# (a debug build, so the ShadeIR verifier also runs after every pass) into
+# build-sanitize/ and runs the whole test suite there. Any report fails it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+  -DSHADETREE_SANITIZE=ON --log-level=WARNING
+cmake --build build-sanitize --parallel "$(nproc)"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1200
