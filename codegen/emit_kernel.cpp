@@ -14,6 +14,7 @@
 // control flow); inside, all W lanes compute and the `if` selects per lane.
 #include "codegen/emit_kernel.h"
 
+#include <algorithm>
 #include <map>
 
 #include <llvm/IR/Constants.h>
@@ -462,6 +463,53 @@ void define_gathers(llvm::Module& module, GatherStrategy strategy) {
   }
 }
 
+// The instructions `function` brings when inlined: its own and those of
+// the library functions it calls (table lookups aside: the code generator
+// defines those after this is measured).
+unsigned inlined_size(llvm::Function& function, std::map<llvm::Function*, unsigned>& sizes) {
+  if (auto found = sizes.find(&function); found != sizes.end()) return found->second;
+  unsigned size = function.getInstructionCount();
+  for (llvm::BasicBlock& block : function)
+    for (llvm::Instruction& instruction : block)
+      if (auto* call = llvm::dyn_cast<llvm::CallInst>(&instruction))
+        if (llvm::Function* callee = call->getCalledFunction(); callee && !callee->isDeclaration())
+          size += inlined_size(*callee, sizes);
+  return sizes[&function] = size;
+}
+
+// Inlining every op into one kernel hands the optimizer and the register
+// allocator a body that grows with the graph, and their time grows faster
+// than the body (a chain of 500 `exp` took 5 s, 100 noises more). Past a
+// budget of inlined instructions, the largest ops that a kernel calls more
+// than once are called instead, largest first, until the rest fits: each
+// is compiled once per kernel however many nodes use it, with its
+// constants read at run time. Small graphs, the common case, keep
+// everything inlined.
+constexpr unsigned inline_budget = 4000;
+
+void outline_large_ops(llvm::Module& module) {
+  std::map<llvm::Function*, unsigned> sizes;
+  std::vector<std::pair<unsigned, llvm::Function*>> ops;  // (size, op)
+  unsigned total = 0;
+  for (llvm::Function& function : module) {
+    if (function.isDeclaration() || !function.getName().starts_with("st_") ||
+        function.getName().starts_with("st_gather") || function.use_empty())
+      continue;
+    const unsigned size = inlined_size(function, sizes);
+    total += size * static_cast<unsigned>(function.getNumUses());
+    ops.push_back({size, &function});
+  }
+  std::sort(ops.begin(), ops.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (auto& [size, function] : ops) {
+    if (total <= inline_budget) break;
+    const unsigned calls = static_cast<unsigned>(function->getNumUses());
+    if (calls < 2) continue;
+    function->removeFnAttr(llvm::Attribute::AlwaysInline);
+    function->addFnAttr(llvm::Attribute::NoInline);
+    total -= size * (calls - 1);
+  }
+}
+
 }  // namespace
 
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
@@ -484,6 +532,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   if (!bind) return bind.error();
   Result<llvm::Function*> run = emitter.emit_run(function_name + "_run");
   if (!run) return run.error();
+  outline_large_ops(*module);
   // Drop the library functions this kernel never calls (other widths, other
   // ops) before the optimizer spends time on them.
   for (bool erased = true; erased;) {

@@ -3,6 +3,8 @@
 // compiled objects land in the disk cache.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <filesystem>
 
 #include "pipeline/compile_graph.h"
@@ -69,6 +71,29 @@ TEST(JitCompiler, KernelsHoldOnlyTheirTwoFunctions) {
   for (std::size_t at = ir->find("\ndefine "); at != std::string::npos; at = ir->find("\ndefine ", at + 1)) ++functions;
   EXPECT_EQ(functions, 2) << *ir;
   EXPECT_EQ(ir->find("global_ctors"), std::string::npos);
+}
+
+// Past the inlining budget, an op used by many nodes is compiled once and
+// called: a chain of 200 exps compiles to three functions, not one huge one.
+TEST(JitCompiler, LargeGraphsCallTheirLargestOpsInsteadOfInliningThem) {
+  std::string nodes = R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
+                         {"id": "v0", "op": "mul", "in": {"a": "s.x", "b": 1}})";
+  for (int i = 1; i <= 200; ++i)
+    nodes += R"(, {"id": "v)" + std::to_string(i) + R"(", "op": "exp", "in": {"x": "v)" + std::to_string(i - 1) +
+             R"("}})";
+  Result<LoadedGraph> loaded = compile_graph_text(testing::graph_text(nodes, R"("color": "v200")"), "exp.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+  int definitions = 0, calls = 0;
+  std::istringstream lines(*ir);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("@st_exp_w8(") == std::string::npos) continue;
+    definitions += line.rfind("define ", 0) == 0;
+    calls += line.find("call ") != std::string::npos;
+  }
+  EXPECT_EQ(definitions, 1);
+  EXPECT_EQ(calls, 200);
 }
 
 TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
