@@ -72,7 +72,7 @@ std::string host_features() {
 // A canonical text of everything the machine code depends on.
 std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
-  text << kernel_abi_hash() << " " << op_library_hash() << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  text << kernel_abi_hash() << " " << op_library_hash() << " " << SHADETREE_CODEGEN_DIGEST << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
   for (const IrInstr& instr : ir.code) {
     text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
          << ' ' << static_cast<int>(instr.generic)
