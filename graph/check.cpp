@@ -141,7 +141,7 @@ class Checker {
     }
     CheckedBody result;
     for (const OutputDecl& output : outputs) {
-      CheckedSource source = resolve_source(body, output.source, {}, "output " + output.name);
+      CheckedSource source = resolve_source(body, output.source, {}, "output \"" + output.name + "\"");
       result.outputs.push_back({output.name, source});
     }
     result.nodes = std::move(body.checked);

@@ -33,7 +33,8 @@ std::string Diagnostic::to_string() const {
   std::string line = "error: ";
   if (!file.empty()) line += file + ": ";
   if (!node.empty()) line += "node \"" + node + "\" ";
-  if (!input.empty()) line += "input \"" + input + "\"";
+  // Without a node, `input` names what is at fault as it is (output "color").
+  if (!input.empty()) line += node.empty() ? input : "input \"" + input + "\"";
   if (!node.empty() || !input.empty()) {
     if (line.back() == ' ') line.pop_back();
     line += ": ";

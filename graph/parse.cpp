@@ -228,8 +228,7 @@ class Parser {
 
   [[noreturn]] void fail_at(const std::string& node, const std::string& input, const std::string& what,
                             const std::string& message) const {
-    if (input.empty()) fail(node, {}, what + ": " + message);
-    fail(node, input, message);
+    fail(node, input.empty() ? what : input, message);
   }
 
   // A node input (`input` names it) or a graph or function output (`input`

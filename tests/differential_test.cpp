@@ -15,6 +15,8 @@
 #include "interp/interpreter.h"
 #include "ir/verify.h"
 #include "jit/jit_kernel.h"
+#include "graph/check.h"
+#include "nodes/limits.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -263,6 +265,47 @@ TEST(NodeDifferential, ScalarArgumentsSplatToTheOpsType) {
       "outputs": {"color": "c"}})");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   EXPECT_EQ(compare_backends("splat", loaded->ir, loaded->params, 8), "");
+}
+
+// --- graphs at the documented limits ---------------------------------------
+
+// Octaves and iterations at their maxima, tables of max_table_entries, and
+// functions nested as deep as the checker allows.
+TEST(LimitsDifferential, GraphsAtTheDocumentedLimitsAgree) {
+  auto list = [](int count, int components) {
+    std::string text = "[";
+    for (int i = 0; i < count; ++i) {
+      const float value = static_cast<float>((i * 37) % 101) / 100.0f;
+      text += i ? ", " : "";
+      text += components == 1 ? std::to_string(value)
+                              : "[" + std::to_string(value) + ", " + std::to_string(1 - value) + ", 0.5]";
+    }
+    return text + "]";
+  };
+  std::string rows = "[";
+  for (int r = 0; r < 64; ++r) rows += (r ? ", " : "") + list(64, 1);
+  rows += "]";
+  std::string functions = R"("functions": {"f0": {"inputs": {"x": "float"}, "nodes": [{"id": "s", "op": "sin", "in": {"x": "$x"}}], "outputs": {"y": "s"}})";
+  for (int depth = 1; depth < max_function_nesting; ++depth)
+    functions += ", \"f" + std::to_string(depth) + R"(": {"inputs": {"x": "float"}, "nodes": [{"id": "c", "op": "f)" +
+                 std::to_string(depth - 1) + R"(", "in": {"x": "$x"}}, {"id": "a", "op": "add", "in": {"a": "c", "b": 0.01}}], "outputs": {"y": "a"}})";
+  functions += "},";
+  const std::string text = std::string(header) + functions + R"("nodes": [)" + preamble + R"(,
+      {"id": "fbm", "op": "fbm", "in": {"p": "p", "octaves": 16, "filter_width": "fw"}},
+      {"id": "turb", "op": "turbulence", "in": {"p": "p", "octaves": 16}},
+      {"id": "waves", "op": "sines", "in": {"p": "p", "octaves": 16}},
+      {"id": "jul", "op": "julia", "in": {"p": "vec2_a", "c": [-0.8, 0.156], "iterations": 1024}},
+      {"id": "sp", "op": "spline", "in": {"x": "float_b"}, "knots": )" + list(max_table_entries, 3) + R"(},
+      {"id": "ct", "op": "color_table", "in": {"x": "float_c", "filter_width": "fw"}, "entries": )" +
+                           list(max_table_entries, 3) + R"(},
+      {"id": "t2", "op": "table2d", "in": {"x": "float_b", "y": "float_c"}, "values": )" + rows + R"(},
+      {"id": "deep", "op": "f)" + std::to_string(max_function_nesting - 1) + R"(", "in": {"x": "float_a"}},
+      {"id": "scalars", "op": "color", "in": {"r": "fbm", "g": "turb", "b": "waves"}}],
+      "outputs": {"color": "scalars", "emission": "sp", "normal": "ct", "specular": "jul", "roughness": "t2",
+                  "opacity": "deep"}})";
+  Result<LoadedGraph> loaded = compile_text(text);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  EXPECT_EQ(compare_backends("limits", loaded->ir, loaded->params, 8), "");
 }
 
 // --- random well-typed graphs ---------------------------------------------
