@@ -35,7 +35,7 @@ struct IrInstr {
   OpId op = OpId::add;
   Type type = Type::float_;
   Type generic = Type::float_;  // the op's type variable T, where it has one
-  bool uniform = false;  // depends only on params and constants
+  bool uniform = false;  // depends only on params, constants and uniform globals
   std::uint8_t arg_count = 0;
   std::array<std::int32_t, max_op_args> args{-1, -1, -1, -1, -1, -1};
   std::int32_t data_offset = 0;  // into ShadeIR::data

@@ -4,8 +4,8 @@
 // program through the given evaluator (the reference interpreter), so
 // folding cannot change what a graph computes. Folding in program order
 // folds whole constant chains, since each folded op is a constant for its
-// users. Params and time/frame are uniform but not constant: those values
-// are hoisted out of the sample loop by the backends instead.
+// users. Params and uniform globals (time, frame...) are uniform but not
+// constant: backends compute what depends on them once per binding instead.
 #include "ir/passes/fold_constants.h"
 
 namespace shadetree {
