@@ -3,7 +3,8 @@
 // after each), then the interpreter on a handful of samples, and for one
 // input in eight that compiles to a small program, the JIT, whose results
 // must equal the interpreter's bit for bit. Every diagnostic must be one
-// line. Built by scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
+// line, and runs on an index list must equal dense runs. Built by
+// scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,12 +43,23 @@ struct Samples {
   }
 };
 
+// The outputs of a dense run; a run on a reversed index list must give the
+// same values.
 std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params, Samples& samples) {
-  OutputBuffers outputs(sample_count, kernel.outputs());
-  kernel.bind(params.data(), samples.uniforms)->run(samples.input.inputs(), outputs.planes(), sample_count);
+  OutputBuffers outputs(sample_count, kernel.outputs()), indexed(sample_count, kernel.outputs());
+  std::unique_ptr<BoundKernel> bound = kernel.bind(params.data(), samples.uniforms);
+  bound->run(samples.input.inputs(), outputs.planes(), sample_count);
+  std::uint32_t index[sample_count];
+  for (std::uint32_t i = 0; i < sample_count; ++i) index[i] = static_cast<std::uint32_t>(sample_count) - 1 - i;
+  bound->run_indexed(samples.input.inputs(), indexed.planes(), index, sample_count);
   std::vector<std::vector<float>> values;
-  for (int p : provided_planes(kernel.outputs()))
+  for (int p : provided_planes(kernel.outputs())) {
     values.emplace_back(outputs.plane(p), outputs.plane(p) + sample_count);
+    for (std::size_t i = 0; i < sample_count; ++i) {
+      const float a = outputs.plane(p)[i], b = indexed.plane(p)[i];
+      if (!(a == b || (std::isnan(a) && std::isnan(b)))) fault("an indexed run differs from the dense run");
+    }
+  }
   return values;
 }
 

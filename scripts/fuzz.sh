@@ -2,7 +2,8 @@
 # Builds the libFuzzer harness (fuzz/graph_fuzzer.cpp) with clang-19,
 # AddressSanitizer and UndefinedBehaviorSanitizer into build-fuzz/, and
 # fuzzes graph files for SECONDS (default 180), starting from the gallery
-# and the corpus earlier runs left in build-fuzz/corpus. A crash, a
+# fuzz/seeds (surface and volume graphs, functions, every global) and the
+# corpus earlier runs left in build-fuzz/corpus. A crash, a
 # sanitizer report, a verifier failure or a JIT/interpreter mismatch stops
 # it with a non-zero status and leaves the input in build-fuzz/artifacts/.
 # For a long run: ./scripts/fuzz.sh 3600
@@ -17,4 +18,4 @@ mkdir -p build-fuzz/corpus build-fuzz/artifacts
 export ASAN_OPTIONS=detect_leaks=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 build-fuzz/shadetree_fuzz -max_total_time="$seconds" -dict=fuzz/graph.dict -max_len=8192 -timeout=30 \
-  -rss_limit_mb=6144 -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ build-fuzz/corpus graphs
+  -rss_limit_mb=6144 -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/ build-fuzz/corpus graphs fuzz/seeds
