@@ -57,6 +57,8 @@ std::uint64_t kernel_abi_hash() {
   return hash;
 }
 
+constexpr unsigned max_instructions_for_full_codegen = 6000;
+
 std::string error_text(llvm::Error error) {
   std::string text;
   llvm::handleAllErrors(std::move(error), [&](const llvm::ErrorInfoBase& info) { text += info.message(); });
@@ -235,6 +237,14 @@ class Jit {
       return;
     }
     target_machine_ = std::move(*target_machine);
+    llvm::orc::JITTargetMachineBuilder fast_builder = *machine_builder;
+    fast_builder.setCodeGenOptLevel(llvm::CodeGenOptLevel::None);
+    auto fast_target_machine = fast_builder.createTargetMachine();
+    if (!fast_target_machine) {
+      startup_error_ = error_text(fast_target_machine.takeError());
+      return;
+    }
+    fast_target_machine_ = std::move(*fast_target_machine);
     object_cache_ = std::make_unique<DiskObjectCache>();
     auto jit = llvm::orc::LLJITBuilder()
                    .setJITTargetMachineBuilder(*machine_builder)
@@ -269,8 +279,20 @@ class Jit {
     auto context = std::make_unique<llvm::LLVMContext>();
     Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name, gathers);
     if (!module) return module.error();
-    if (llvm::Error error = jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
+    // Instruction selection, scheduling and greedy register allocation grow
+    // faster than the kernel: a 4000-instruction graph spent 2 s there. A
+    // kernel this large is compiled with the fast, linear path instead
+    // (slower code, a compile in a fraction of the time).
+    if ((*module)->getInstructionCount() > max_instructions_for_full_codegen) {
+      auto object = llvm::orc::SimpleCompiler(*fast_target_machine_)(**module);
+      if (!object) return failure("JIT: " + error_text(object.takeError()));
+      object_cache_->notifyObjectCompiled(module->get(), (*object)->getMemBufferRef());
+      if (llvm::Error error = jit_->addObjectFile(std::move(*object)))
+        return failure("JIT: " + error_text(std::move(error)));
+    } else if (llvm::Error error =
+                   jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context)))) {
       return failure("JIT: " + error_text(std::move(error)));
+    }
     Result<CompiledKernel> compiled = look_up(name, width);
     if (compiled) compiled->compile_milliseconds = elapsed();
     return compiled;
@@ -306,6 +328,7 @@ class Jit {
 
   std::string startup_error_;
   std::unique_ptr<llvm::TargetMachine> target_machine_;
+  std::unique_ptr<llvm::TargetMachine> fast_target_machine_;  // for huge kernels: see build_and_add
   std::unique_ptr<DiskObjectCache> object_cache_;
   std::unique_ptr<llvm::orc::LLJIT> jit_;
   std::mutex mutex_;
