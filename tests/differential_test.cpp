@@ -308,6 +308,20 @@ TEST(LimitsDifferential, GraphsAtTheDocumentedLimitsAgree) {
   EXPECT_EQ(compare_backends("limits", loaded->ir, loaded->params, 8), "");
 }
 
+// A kernel past the size where the JIT switches to fast code generation
+// (jit/jit_compiler.cpp) still computes what the interpreter does.
+TEST(LimitsDifferential, HugeKernelsAgree) {
+  std::string nodes = std::string(preamble) + R"(, {"id": "m0", "op": "mul", "in": {"a": "float_a", "b": 0.01}})";
+  for (int i = 1; i <= 2000; ++i)
+    nodes += R"(, {"id": "e)" + std::to_string(i) + R"(", "op": "exp", "in": {"x": "m)" + std::to_string(i - 1) +
+             R"("}}, {"id": "m)" + std::to_string(i) + R"(", "op": "mul", "in": {"a": "e)" + std::to_string(i) +
+             R"(", "b": 0.001}})";
+  Result<LoadedGraph> loaded =
+      compile_text(std::string(header) + R"("nodes": [)" + nodes + R"(], "outputs": {"color": "m2000"}})");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  EXPECT_EQ(compare_backends("exp chain", loaded->ir, loaded->params, 8), "");
+}
+
 // --- random well-typed graphs ---------------------------------------------
 
 // Grows a graph one node at a time from a pool of typed values, picking ops
