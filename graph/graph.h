@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "graph/scene.h"
 #include "nodes/attributes.h"
 #include "nodes/graph_kind.h"
 #include "nodes/type.h"
@@ -71,6 +72,7 @@ struct RenderSettings {
   float domain_max[2] = {1.0f, 1.0f};  // P.xy at the upper-right corner
   float z = 0.0f;                      // P.z of the image plane
   float frame = 0.0f;
+  std::optional<SceneDesc> scene;      // surface and volume graphs
 };
 
 struct Graph {

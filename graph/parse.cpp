@@ -10,24 +10,15 @@
 #include <set>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
+#include "graph/json_reader.h"
+#include "graph/parse_scene.h"
 
 namespace shadetree {
 namespace {
 
-// ordered_json keeps objects in file order: a function's first output is
-// the first one written.
-using json = nlohmann::ordered_json;
-
-// Parsing stops at the first error: a small exception type carries it out
-// of the recursive descent and parse_graph turns it back into a value.
-struct ParseError {
-  Diagnostic diagnostic;
-};
-
-class Parser {
+class Parser : JsonReader {
  public:
-  explicit Parser(std::string file) : file_(std::move(file)) {}
+  using JsonReader::JsonReader;
 
   Graph parse(const json& document) {
     if (!document.is_object()) fail({}, {}, "a graph file must hold a JSON object");
@@ -35,7 +26,7 @@ class Parser {
                             "render"},
                  {}, "graph");
     Graph graph;
-    graph.file = file_;
+    graph.file = file();
     const std::string format = required_string(document, "format", {});
     if (format != "shadetree-graph")
       fail({}, {}, "field \"format\" must be \"shadetree-graph\", got \"" + format + "\"");
@@ -47,7 +38,7 @@ class Parser {
     if (graph.version < 1 || graph.version > graph_format_version)
       fail({}, {}, "version " + std::to_string(graph.version) + " is not supported (this shadetree reads version " +
                        std::to_string(graph_format_version) + ")");
-    graph.name = optional_string(document, "name", {}, stem(file_));
+    graph.name = optional_string(document, "name", {}, stem(file()));
     const std::string kind = required_string(document, "kind", {});
     const std::optional<GraphKind> known_kind = parse_graph_kind(kind);
     if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + kind + "\"");
@@ -59,55 +50,14 @@ class Parser {
     graph.nodes = parse_nodes(document["nodes"], {});
     if (!document.contains("outputs")) fail({}, {}, "missing field \"outputs\"");
     graph.outputs = parse_outputs(document["outputs"], {});
-    if (document.contains("render")) graph.render = parse_render(document["render"]);
+    if (document.contains("render")) graph.render = parse_render(document["render"], graph.kind);
     return graph;
   }
 
  private:
-  [[noreturn]] void fail(const std::string& node, const std::string& input, const std::string& message) const {
-    throw ParseError{Diagnostic{ExitStatus::invalid_input, file_, node, input, message}};
-  }
-
   static std::string stem(const std::string& path) {
     std::string name = path.substr(path.find_last_of('/') + 1);
     return name.substr(0, name.rfind('.'));
-  }
-
-  void check_fields(const json& object, std::initializer_list<const char*> allowed, const std::string& node,
-                    const std::string& what) const {
-    for (const auto& [key, value] : object.items()) {
-      bool known = false;
-      for (const char* name : allowed) known |= key == name;
-      if (!known) fail(node, {}, "unknown field \"" + key + "\" in " + what);
-    }
-  }
-
-  std::string required_string(const json& object, const char* key, const std::string& node) const {
-    if (!object.contains(key)) fail(node, {}, std::string("missing field \"") + key + "\"");
-    if (!object[key].is_string()) fail(node, {}, std::string("field \"") + key + "\" must be a string");
-    return object[key].get<std::string>();
-  }
-
-  std::string optional_string(const json& object, const char* key, const std::string& node,
-                              std::string fallback) const {
-    if (!object.contains(key)) return fallback;
-    return required_string(object, key, node);
-  }
-
-  float number(const json& value, const std::string& node, const std::string& what) const {
-    if (!value.is_number()) fail(node, {}, what + " must be a number");
-    const double number = value.get<double>();
-    if (!std::isfinite(number) || std::fabs(number) > 3.4e38)
-      fail(node, {}, what + " is out of the range of a 32-bit float");
-    return static_cast<float>(number);
-  }
-
-  std::vector<float> numbers(const json& value, const std::string& node, const std::string& what) const {
-    if (value.is_number()) return {number(value, node, what)};
-    if (!value.is_array()) fail(node, {}, what + " must be a number or an array of numbers");
-    std::vector<float> result;
-    for (const json& item : value) result.push_back(number(item, node, what + " item"));
-    return result;
   }
 
   Type type_field(const json& value, const std::string& node, const std::string& what) const {
@@ -316,9 +266,9 @@ class Parser {
     return result;
   }
 
-  RenderSettings parse_render(const json& render) const {
+  RenderSettings parse_render(const json& render, GraphKind kind) const {
     if (!render.is_object()) fail({}, {}, "field \"render\" must be an object");
-    check_fields(render, {"size", "domain", "z", "frame"}, {}, "render");
+    check_fields(render, {"size", "domain", "z", "frame", "scene"}, {}, "render");
     RenderSettings settings;
     if (render.contains("size")) {
       const json& size = render["size"];
@@ -348,10 +298,12 @@ class Parser {
     }
     if (render.contains("z")) settings.z = number(render["z"], {}, "render z");
     if (render.contains("frame")) settings.frame = number(render["frame"], {}, "render frame");
+    if (render.contains("scene")) {
+      if (kind == GraphKind::texture) fail({}, {}, "render scene is for surface and volume graphs, not textures");
+      settings.scene = parse_scene(*this, render["scene"]);
+    }
     return settings;
   }
-
-  std::string file_;
 };
 
 }  // namespace

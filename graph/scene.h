@@ -1,0 +1,73 @@
+// The scene of a surface (or volume) graph's "render" section, as written:
+// a camera, objects, lights and a background. Plain data; the surface
+// driver builds its intersectable scene from it (render/scene.h).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace shadetree {
+
+// Object to world: scale, then rotate about x, then y, then z (degrees),
+// then translate.
+struct TransformDesc {
+  std::array<float, 3> translate{0.0f, 0.0f, 0.0f};
+  std::array<float, 3> rotate_degrees{0.0f, 0.0f, 0.0f};
+  std::array<float, 3> scale{1.0f, 1.0f, 1.0f};
+};
+
+enum class ObjectType { sphere, torus, plane, box, revolution, mesh };
+
+struct ObjectDesc {
+  ObjectType type = ObjectType::sphere;
+  int id = 0;  // what the graph's `surface` input reads
+  TransformDesc transform;
+  float radius = 1.0f;                                  // sphere
+  float major_radius = 1.0f, minor_radius = 0.4f;       // torus
+  std::array<float, 3> half_size{1.0f, 1.0f, 1.0f};     // box
+  std::vector<std::array<float, 2>> profile;            // revolution: (radius, height) points
+  std::string mesh_file;                                // mesh: as written, relative to the graph file
+};
+
+struct CameraDesc {
+  std::array<float, 3> position{0.0f, 0.0f, 4.0f};
+  std::array<float, 3> target{0.0f, 0.0f, 0.0f};
+  std::array<float, 3> up{0.0f, 1.0f, 0.0f};
+  float fov_degrees = 40.0f;         // vertical field of view (perspective)
+  bool orthographic = false;
+  float orthographic_height = 3.0f;  // world units the image spans vertically
+};
+
+enum class LightType { directional, point };
+
+struct LightDesc {
+  LightType type = LightType::directional;
+  std::array<float, 3> direction{-1.0f, -1.0f, -1.0f};  // directional: the way the light travels
+  std::array<float, 3> position{0.0f, 5.0f, 5.0f};      // point
+  std::array<float, 3> color{1.0f, 1.0f, 1.0f};
+  float intensity = 1.0f;
+};
+
+// "lit": the driver lights the graph's outputs (Lambert + Blinn-Phong);
+// "none": the graph's color is the pixel (it lights itself from N, I, L).
+enum class Lighting { lit, none };
+
+struct SceneDesc {
+  CameraDesc camera;
+  std::vector<ObjectDesc> objects;
+  std::vector<LightDesc> lights;
+  std::array<float, 3> background{0.16f, 0.17f, 0.19f};
+  std::array<float, 3> ambient{0.06f, 0.06f, 0.07f};
+  Lighting lighting = Lighting::lit;
+  bool shadows = true;
+};
+
+// What a scene without "lights" is lit by.
+std::vector<LightDesc> default_lights();
+
+inline constexpr std::size_t max_scene_objects = 4096;
+inline constexpr std::size_t max_scene_lights = 64;
+inline constexpr std::size_t max_profile_points = 1024;
+
+}  // namespace shadetree
