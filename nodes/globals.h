@@ -89,6 +89,9 @@ constexpr int count_floats(Variability variability) {
 inline constexpr int varying_plane_count = count_floats(Variability::varying);
 inline constexpr int uniform_value_count = count_floats(Variability::uniform);
 
+// The global "time" is frame / frames_per_second.
+inline constexpr float frames_per_second = 24.0f;
+
 // Which globals a program reads.
 using GlobalSet = std::bitset<globals.size()>;
 

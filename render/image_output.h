@@ -6,7 +6,7 @@
 #include <string>
 
 #include "graph/diagnostic.h"
-#include "render/texture_driver.h"
+#include "render/image.h"
 
 namespace shadetree {
 

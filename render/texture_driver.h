@@ -8,6 +8,7 @@
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
 #include "ir/kernel.h"
+#include "render/image.h"
 
 namespace shadetree {
 
@@ -33,8 +34,6 @@ struct TextureSample {
 // P, uv, filter_width, and N = +z.
 void store_texture_sample(SampleBuffers& buffers, std::size_t i, const TextureSample& sample);
 
-inline constexpr float frames_per_second = 24.0f;
-
 // The uniform globals of a view: time = frame / 24, frame.
 UniformInputs texture_uniforms(const TextureView& view);
 
@@ -42,13 +41,6 @@ UniformInputs texture_uniforms(const TextureView& view);
 TextureSample texture_sample_at_pixel(const TextureView& view, int column, int row);
 // Any point: uv from its place in the domain, filter_width from pixel size.
 TextureSample texture_sample_at_point(const TextureView& view, const float P[3]);
-
-struct Image {
-  int width = 0;
-  int height = 0;
-  int channels = 0;           // 3 (rgb) or 4 (rgba)
-  std::vector<float> pixels;  // row-major, top row first, interleaved
-};
 
 struct TextureRenderOptions {
   int threads = 0;  // 0: all cores

@@ -46,7 +46,7 @@ TEST_P(GalleryGraph, IsBitIdenticalAcrossRunsAndThreadCounts) {
   EXPECT_EQ(many.pixels, again.pixels);
 }
 
-INSTANTIATE_TEST_SUITE_P(Gallery, GalleryGraph, ::testing::ValuesIn(testing::gallery_graphs()),
+INSTANTIATE_TEST_SUITE_P(Gallery, GalleryGraph, ::testing::ValuesIn(testing::gallery_graphs(GraphKind::texture)),
                          [](const auto& info) { return testing::gallery_graph_name(info.param); });
 
 TEST(TextureDriver, MapsPixelCentresThroughTheDomain) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "graph/parse.h"
+
 namespace shadetree::testing {
 
 inline std::vector<std::string> gallery_graphs() {
@@ -13,6 +15,16 @@ inline std::vector<std::string> gallery_graphs() {
   for (const auto& entry : std::filesystem::directory_iterator(SHADETREE_SOURCE_DIR "/graphs"))
     if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
   std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+// The gallery graphs of one kind.
+inline std::vector<std::string> gallery_graphs(GraphKind kind) {
+  std::vector<std::string> paths;
+  for (const std::string& path : gallery_graphs()) {
+    Result<Graph> graph = load_graph(path);
+    if (graph && graph->kind == kind) paths.push_back(path);
+  }
   return paths;
 }
 

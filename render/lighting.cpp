@@ -1,0 +1,53 @@
+#include "render/lighting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+namespace shadetree {
+
+float specular_exponent(float roughness) {
+  const float r = std::clamp(roughness, 0.02f, 1.0f);
+  return 2.0f / (r * r) - 2.0f;
+}
+
+glm::vec3 direction_to_light(const Light& light, const glm::vec3& point, float* distance) {
+  if (light.type == LightType::directional) {
+    *distance = std::numeric_limits<float>::infinity();
+    return -light.direction;
+  }
+  const glm::vec3 offset = light.position - point;
+  *distance = glm::length(offset);
+  return *distance > 0.0f ? offset / *distance : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows) {
+  glm::vec3 result = glm::vec3(scene.desc().ambient[0], scene.desc().ambient[1], scene.desc().ambient[2]) *
+                         material.color +
+                     material.emission;
+  const glm::vec3& n = point.shading_normal;
+  const float exponent = specular_exponent(material.roughness);
+  // Shadow rays start off the surface by an amount that scales with the
+  // point's distance from the origin (float spacing grows with it).
+  const float offset = 1e-4f * (1.0f + glm::length(point.point));
+  for (const Light& light : scene.lights()) {
+    float distance = 0.0f;
+    const glm::vec3 l = direction_to_light(light, point.point, &distance);
+    const float diffuse = glm::dot(n, l);
+    // A light behind the geometric surface cannot reach it, whatever the
+    // perturbed normal says.
+    if (diffuse <= 0.0f || glm::dot(point.geometric_normal, l) <= 0.0f) continue;
+    if (shadows && scene.occluded(Ray{point.point + offset * point.geometric_normal, l}, 0.0f, distance)) continue;
+    glm::vec3 term = material.color * diffuse;
+    if (material.specular != 0.0f) {
+      const glm::vec3 half = glm::normalize(l + point.to_viewer);
+      term += material.specular * std::pow(std::max(0.0f, glm::dot(n, half)), exponent);
+    }
+    result += light.radiance * term;
+  }
+  return result;
+}
+
+}  // namespace shadetree

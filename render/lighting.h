@@ -1,0 +1,42 @@
+// The driver's lighting of a shaded surface point: Lambert diffuse plus a
+// Blinn-Phong specular lobe from each light, with shadow rays, after the
+// graph has given the point's colour, perturbed normal and material
+// (Perlin 1985 runs the shade program first and lights its outputs; so do
+// Rhoades et al. 1992 with deferred shading).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "render/scene.h"
+
+namespace shadetree {
+
+// What a surface graph says about one visible point.
+struct SurfaceMaterial {
+  glm::vec3 color{0.8f};
+  float specular = 0.25f;   // defaults where the graph has no such output
+  float roughness = 0.35f;
+  glm::vec3 emission{0.0f};
+};
+
+struct LitPoint {
+  glm::vec3 point{0.0f};             // world
+  glm::vec3 shading_normal{0.0f};    // world, unit, toward the viewer
+  glm::vec3 geometric_normal{0.0f};  // world, unit, toward the viewer
+  glm::vec3 to_viewer{0.0f};         // world, unit
+};
+
+// Blinn-Phong exponent of a roughness in [0, 1] (2 / r^2 - 2, the
+// exponent whose lobe matches a Beckmann distribution of slope r).
+float specular_exponent(float roughness);
+
+// ambient * color + emission + the sum over lights of
+// radiance * (color * max(0, N.L) + specular * max(0, N.H)^exponent),
+// each light's term dropped where a shadow ray finds an object first.
+glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows);
+
+// Unit direction from `point` toward `light`, and the distance to it
+// (infinite for directional lights).
+glm::vec3 direction_to_light(const Light& light, const glm::vec3& point, float* distance);
+
+}  // namespace shadetree

@@ -1,0 +1,69 @@
+#include "render/preview_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "render/mesh.h"
+
+namespace shadetree {
+namespace {
+
+// A camera looking at the origin from `direction`, far enough for a
+// sphere of `radius` to fill most of the frame.
+CameraDesc framing(float radius, std::array<float, 3> direction) {
+  CameraDesc camera;
+  camera.fov_degrees = 30.0f;
+  const float length =
+      std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const float distance = 1.15f * radius / std::sin(camera.fov_degrees * 3.14159265f / 360.0f);
+  for (int axis = 0; axis < 3; ++axis) camera.position[axis] = direction[axis] / length * distance;
+  return camera;
+}
+
+}  // namespace
+
+Result<SceneDesc> preview_scene(const std::string& object) {
+  SceneDesc scene;
+  scene.lights = default_lights();
+  ObjectDesc shape;
+  if (object == "sphere") {
+    shape.type = ObjectType::sphere;
+    scene.camera = framing(1.0f, {0.0f, 0.35f, 1.0f});
+  } else if (object == "torus") {
+    shape.type = ObjectType::torus;
+    scene.camera = framing(shape.major_radius + shape.minor_radius, {0.0f, 0.9f, 1.0f});
+  } else if (object == "box") {
+    shape.type = ObjectType::box;
+    shape.transform.rotate_degrees = {0.0f, 35.0f, 0.0f};
+    scene.camera = framing(std::sqrt(3.0f), {0.0f, 0.6f, 1.0f});
+  } else if (object == "plane") {
+    // A floor receding to the horizon, as the 1992 checkerboard.
+    shape.type = ObjectType::plane;
+    scene.camera.position = {0.0f, 1.0f, 4.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.fov_degrees = 50.0f;
+  } else {
+    Result<TriangleMesh> mesh = load_mesh(object);
+    if (!mesh) return mesh.error();
+    glm::vec3 low = mesh->positions[0], high = mesh->positions[0];
+    for (const glm::vec3& position : mesh->positions) {
+      low = glm::min(low, position);
+      high = glm::max(high, position);
+    }
+    const glm::vec3 centre = (low + high) * 0.5f;
+    const float radius = std::max(glm::length(high - low) * 0.5f, 1e-20f);
+    shape.type = ObjectType::mesh;
+    shape.mesh_file = std::filesystem::absolute(object).string();
+    shape.transform.scale = {1.0f / radius, 1.0f / radius, 1.0f / radius};
+    shape.transform.translate = {-centre.x / radius, -centre.y / radius, -centre.z / radius};
+    scene.camera = framing(1.0f, {0.0f, 0.35f, 1.0f});
+  }
+  scene.objects.push_back(shape);
+  return scene;
+}
+
+}  // namespace shadetree

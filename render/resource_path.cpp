@@ -1,0 +1,39 @@
+#include "render/resource_path.h"
+
+#include <filesystem>
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Whether `path` is `folder` or lies below it; both already canonical.
+bool lies_under(const fs::path& path, const fs::path& folder) {
+  auto p = path.begin();
+  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+    if (f->empty()) continue;  // a trailing separator
+    if (p == path.end() || *p != *f) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Result<std::string> resolve_graph_resource(const std::string& graph_file, const std::string& path,
+                                           const std::vector<std::string>& search_paths, const std::string& what) {
+  std::error_code error;
+  const fs::path graph_folder = fs::weakly_canonical(fs::absolute(fs::path(graph_file).parent_path(), error), error);
+  const fs::path written(path);
+  const fs::path resolved =
+      fs::weakly_canonical(written.is_absolute() ? written : graph_folder / written, error);
+  if (error) return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {}, what + " \"" + path + "\": " + error.message()};
+  bool allowed = lies_under(resolved, graph_folder);
+  for (const std::string& folder : search_paths)
+    allowed = allowed || lies_under(resolved, fs::weakly_canonical(fs::absolute(folder, error), error));
+  if (!allowed)
+    return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {},
+                      what + " \"" + path + "\" lies outside the graph's folder (allow its folder with --search-path)"};
+  return resolved.string();
+}
+
+}  // namespace shadetree

@@ -1,0 +1,260 @@
+#include "render/surface_driver.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/lighting.h"
+#include "render/thread_bindings.h"
+
+namespace shadetree {
+namespace {
+
+// 32 x 32 pixels: a kernel call of ~1000 visible samples per sample per
+// pixel keeps the lanes full and the planes in cache.
+constexpr int tile_size = 32;
+constexpr float max_filter_width = 1e6f;  // at grazing angles the footprint is unbounded
+
+// A 32-bit integer hash (Wellons' lowbias32): jitter that depends only on
+// the pixel and the sample, so images do not depend on the thread count.
+std::uint32_t hash(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+float unit_float(std::uint32_t bits) { return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f); }
+
+// Where in pixel (column, row) sample `index` of `count` lies, in [0, 1)^2:
+// the centre for one sample, else jittered, stratified on a grid where
+// `count` is a square.
+glm::vec2 sample_offset(int column, int row, int index, int count) {
+  if (count == 1) return {0.5f, 0.5f};
+  const std::uint32_t seed = hash(static_cast<std::uint32_t>(column) * 73856093u ^
+                                  static_cast<std::uint32_t>(row) * 19349663u ^
+                                  static_cast<std::uint32_t>(index) * 83492791u);
+  const glm::vec2 jitter(unit_float(seed), unit_float(hash(seed)));
+  const int grid = static_cast<int>(std::sqrt(static_cast<float>(count)));
+  if (grid * grid != count) return jitter;
+  return (glm::vec2(static_cast<float>(index % grid), static_cast<float>(index / grid)) + jitter) /
+         static_cast<float>(grid);
+}
+
+// A visible sample: its pixel, its hit and the primary ray.
+struct VisibleSample {
+  int pixel = 0;  // in the tile
+  SceneHit hit;
+  glm::vec3 direction{0.0f};         // of the primary ray, unit, world
+  glm::vec3 geometric_normal{0.0f};  // world, toward the viewer
+  bool back_face = false;
+  float filter_width = 0.0f;
+};
+
+// The pixel's footprint on the surface (ray differentials, Igehy 1999):
+// where the rays through the neighbouring sample positions meet the
+// tangent plane at the hit, in the units of object-space P.
+float footprint(const Camera& camera, const SceneHit& hit, float x, float y, float step) {
+  float width = 0.0f;
+  for (const Ray& neighbour : {camera.ray(x + step, y), camera.ray(x, y + step)}) {
+    const float facing = glm::dot(neighbour.direction, hit.world_normal);
+    if (std::fabs(facing) < 1e-12f) return max_filter_width;
+    const float t = glm::dot(hit.world_point - neighbour.origin, hit.world_normal) / facing;
+    const glm::vec3 world_offset = neighbour.origin + t * neighbour.direction - hit.world_point;
+    const glm::vec3 object_offset = glm::mat3(hit.object->world_to_object) * world_offset;
+    width = std::max(width, glm::length(object_offset));
+  }
+  return std::isfinite(width) ? std::min(width, max_filter_width) : max_filter_width;
+}
+
+glm::vec3 read3(const OutputBuffers& outputs, const OutputLayout& layout, OutputId id, std::size_t i) {
+  return {outputs.plane(layout.plane(id, 0))[i], outputs.plane(layout.plane(id, 1))[i],
+          outputs.plane(layout.plane(id, 2))[i]};
+}
+
+void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3& value) {
+  if (!buffers.has(id)) return;
+  for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = value[c];
+}
+
+class StageClock {
+ public:
+  explicit StageClock(std::atomic<long long>& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~StageClock() {
+    total_ += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::atomic<long long>& total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+UniformInputs surface_uniforms(const Scene& scene, float frame) {
+  UniformInputs uniforms;
+  uniforms.set(GlobalId::time, frame / frames_per_second);
+  uniforms.set(GlobalId::frame, frame);
+  if (!scene.lights().empty())
+    for (int c = 0; c < 3; ++c) uniforms.set(GlobalId::light_color, scene.lights()[0].radiance[c], c);
+  return uniforms;
+}
+
+Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
+                             const Camera& camera, const SurfaceView& view, const SurfaceRenderOptions& options,
+                             SurfaceRenderStats* stats) {
+  const OutputLayout& layout = kernel.outputs();
+  if (layout.kind != GraphKind::surface || !layout.provides(OutputId::color))
+    return invalid_input("the surface driver needs a surface graph with an output \"color\"");
+  const int samples_per_pixel = std::max(1, view.samples_per_pixel);
+  const bool lit = scene.desc().lighting == Lighting::lit;
+  const bool shadows = options.shadows && scene.desc().shadows;
+  const glm::vec3 background(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]);
+  const float step = 1.0f / std::sqrt(static_cast<float>(samples_per_pixel));
+
+  Image image;
+  image.width = view.width;
+  image.height = view.height;
+  image.channels = 3;
+  image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
+
+  const int tiles_x = (view.width + tile_size - 1) / tile_size;
+  const int tiles_y = (view.height + tile_size - 1) / tile_size;
+  const int tile_count = tiles_x * tiles_y;
+  std::atomic<int> tiles_done{0};
+  std::atomic<long long> visibility_ns{0}, shading_ns{0}, lighting_ns{0};
+  std::atomic<long> visible_total{0};
+  ThreadBindings bindings(kernel, params.data(), surface_uniforms(scene, view.frame));
+
+  auto render_tile = [&](int tile_x, int tile_y) {
+    const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
+    const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
+    std::vector<glm::vec3> sums(static_cast<std::size_t>(w) * h, glm::vec3(0.0f));
+    std::vector<VisibleSample> visible;
+    {
+      StageClock clock(visibility_ns);
+      for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+          for (int s = 0; s < samples_per_pixel; ++s) {
+            const glm::vec2 offset = sample_offset(x0 + x, y0 + y, s, samples_per_pixel);
+            const float px = static_cast<float>(x0 + x) + offset.x, py = static_cast<float>(y0 + y) + offset.y;
+            const Ray ray = camera.ray(px, py);
+            std::optional<SceneHit> hit = scene.intersect(ray, 0.0f, std::numeric_limits<float>::infinity());
+            if (!hit) {
+              sums[static_cast<std::size_t>(y) * w + x] += background;
+              continue;
+            }
+            VisibleSample& sample = visible.emplace_back();
+            sample.pixel = y * w + x;
+            sample.hit = *hit;
+            sample.direction = ray.direction;
+            // Two-sided: the graph and the lights see the side facing the
+            // viewer (the inside of a vase, the underside of a plane).
+            sample.back_face = glm::dot(hit->world_normal, ray.direction) > 0.0f;
+            sample.geometric_normal = sample.back_face ? -hit->world_normal : hit->world_normal;
+            sample.filter_width = footprint(camera, *hit, px, py, step);
+          }
+        }
+      }
+    }
+    const std::size_t count = visible.size();
+    visible_total += static_cast<long>(count);
+    if (count > 0) {
+      SampleBuffers inputs(count, kernel.reads());
+      OutputBuffers outputs(count, layout);
+      {
+        StageClock clock(shading_ns);
+        for (std::size_t i = 0; i < count; ++i) {
+          const VisibleSample& sample = visible[i];
+          const SceneObject& object = *sample.hit.object;
+          const glm::mat3 to_object(object.world_to_object);
+          store3(inputs, GlobalId::P, i, sample.hit.object_point);
+          store3(inputs, GlobalId::N, i, sample.back_face ? -sample.hit.object_normal : sample.hit.object_normal);
+          store3(inputs, GlobalId::I, i, glm::normalize(to_object * sample.direction));
+          if (inputs.has(GlobalId::L)) {
+            glm::vec3 l(0.0f, 1.0f, 0.0f);  // no lights: straight up
+            if (!scene.lights().empty()) {
+              float distance = 0.0f;
+              l = direction_to_light(scene.lights()[0], sample.hit.world_point, &distance);
+            }
+            store3(inputs, GlobalId::L, i, glm::normalize(to_object * l));
+          }
+          if (inputs.has(GlobalId::uv)) {
+            inputs.plane(GlobalId::uv, 0)[i] = sample.hit.uv.x;
+            inputs.plane(GlobalId::uv, 1)[i] = sample.hit.uv.y;
+          }
+          if (inputs.has(GlobalId::surface)) inputs.plane(GlobalId::surface)[i] = static_cast<float>(object.id);
+          if (inputs.has(GlobalId::filter_width)) inputs.plane(GlobalId::filter_width)[i] = sample.filter_width;
+        }
+        bindings.local().run(inputs.inputs(), outputs.planes(), count);
+      }
+      StageClock clock(lighting_ns);
+      for (std::size_t i = 0; i < count; ++i) {
+        const VisibleSample& sample = visible[i];
+        SurfaceMaterial material;
+        material.color = read3(outputs, layout, OutputId::color, i);
+        glm::vec3 result = material.color;
+        if (lit) {
+          if (layout.provides(OutputId::specular)) material.specular = outputs.plane(layout.plane(OutputId::specular))[i];
+          if (layout.provides(OutputId::roughness))
+            material.roughness = outputs.plane(layout.plane(OutputId::roughness))[i];
+          if (layout.provides(OutputId::emission)) material.emission = read3(outputs, layout, OutputId::emission, i);
+          LitPoint point;
+          point.point = sample.hit.world_point;
+          point.geometric_normal = sample.geometric_normal;
+          point.to_viewer = -sample.direction;
+          point.shading_normal = sample.geometric_normal;
+          if (layout.provides(OutputId::normal)) {
+            // The graph's normal is in object space, like the N it read.
+            const glm::vec3 normal = sample.hit.object->normal_to_world * read3(outputs, layout, OutputId::normal, i);
+            const float length = glm::length(normal);
+            if (length > 0.0f && std::isfinite(length)) point.shading_normal = normal / length;
+          }
+          result = light_point(scene, material, point, shadows);
+        }
+        if (layout.provides(OutputId::opacity)) {
+          const float opacity = std::clamp(outputs.plane(layout.plane(OutputId::opacity))[i], 0.0f, 1.0f);
+          result = opacity * result + (1.0f - opacity) * background;
+        }
+        sums[static_cast<std::size_t>(sample.pixel)] += result;
+      }
+    }
+    const float weight = 1.0f / static_cast<float>(samples_per_pixel);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        float* pixel = image.pixels.data() + (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * 3;
+        const glm::vec3 value = sums[static_cast<std::size_t>(y) * w + x] * weight;
+        for (int c = 0; c < 3; ++c) pixel[c] = value[c];
+      }
+    const int done = ++tiles_done;
+    if (options.progress) options.progress(static_cast<double>(done) / tile_count);
+  };
+
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
+                      [&](const tbb::blocked_range2d<int>& range) {
+                        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
+                          for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) render_tile(tx, ty);
+                      });
+  });
+  if (stats) {
+    stats->visibility_seconds = static_cast<double>(visibility_ns.load()) * 1e-9;
+    stats->shading_seconds = static_cast<double>(shading_ns.load()) * 1e-9;
+    stats->lighting_seconds = static_cast<double>(lighting_ns.load()) * 1e-9;
+    stats->visible_samples = visible_total.load();
+    stats->samples = static_cast<long>(view.width) * view.height * samples_per_pixel;
+  }
+  return image;
+}
+
+}  // namespace shadetree

@@ -1,0 +1,50 @@
+// The surface shader driver (Perlin 1985's Pixel Stream Editor on objects;
+// Rhoades et al. 1992's deferred shading): per pixel, a primary ray finds
+// the visible object, point, normal, uv and the pixel's footprint on the
+// surface; then the surface graph runs once per visible sample, a whole
+// tile's visible samples in one kernel call (no lanes spent on the
+// background); then the driver lights what the graph returned.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "ir/kernel.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/scene.h"
+
+namespace shadetree {
+
+struct SurfaceView {
+  int width = 512;
+  int height = 512;
+  float frame = 0.0f;
+  int samples_per_pixel = 1;  // jittered, stratified where a square
+};
+
+struct SurfaceRenderOptions {
+  int threads = 0;  // 0: all cores
+  bool shadows = true;  // and the scene's "shadows"
+  std::function<void(double fraction_done)> progress;  // may be empty
+};
+
+// Where the time went, summed over threads (seconds of one core).
+struct SurfaceRenderStats {
+  double visibility_seconds = 0;  // primary rays and footprints
+  double shading_seconds = 0;     // the kernel
+  double lighting_seconds = 0;    // lights and shadow rays
+  long visible_samples = 0;
+  long samples = 0;
+};
+
+// The uniform globals of a frame: time, frame and the key light's colour.
+UniformInputs surface_uniforms(const Scene& scene, float frame);
+
+// A surface graph's outputs (nodes/output_contract.h), lit unless the
+// scene says "lighting": "none". RGB, averaged over the pixel's samples.
+Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
+                             const Camera& camera, const SurfaceView& view, const SurfaceRenderOptions& options,
+                             SurfaceRenderStats* stats = nullptr);
+
+}  // namespace shadetree

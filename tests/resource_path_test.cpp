@@ -1,0 +1,64 @@
+// Files named by a graph stay inside its folder unless the user allows
+// another with --search-path.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "render/resource_path.h"
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ResourcePath : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("shadetree-resource-" + std::to_string(::getpid()));
+    fs::create_directories(root_ / "graphs" / "meshes");
+    fs::create_directories(root_ / "elsewhere");
+    std::ofstream(root_ / "graphs" / "meshes" / "a.obj") << "v 0 0 0\n";
+    std::ofstream(root_ / "elsewhere" / "b.obj") << "v 0 0 0\n";
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  std::string graph() const { return (root_ / "graphs" / "g.json").string(); }
+  fs::path root_;
+};
+
+TEST_F(ResourcePath, ResolvesRelativeToTheGraphFolder) {
+  Result<std::string> path = resolve_graph_resource(graph(), "meshes/a.obj", {}, "file");
+  ASSERT_TRUE(path.ok()) << path.error().to_string();
+  EXPECT_EQ(fs::path(*path), fs::canonical(root_ / "graphs" / "meshes" / "a.obj"));
+}
+
+TEST_F(ResourcePath, RefusesPathsThatLeaveTheGraphFolder) {
+  for (const std::string& escape : {std::string("../elsewhere/b.obj"), (root_ / "elsewhere" / "b.obj").string(),
+                                    std::string("/etc/passwd"), std::string("meshes/../../elsewhere/b.obj")}) {
+    Result<std::string> path = resolve_graph_resource(graph(), escape, {}, "scene object #1 file");
+    ASSERT_FALSE(path.ok()) << escape;
+    EXPECT_NE(path.error().message.find("outside the graph's folder"), std::string::npos);
+    EXPECT_EQ(path.error().status, ExitStatus::invalid_input);
+  }
+}
+
+TEST_F(ResourcePath, SearchPathsAllowOtherFolders) {
+  Result<std::string> path =
+      resolve_graph_resource(graph(), "../elsewhere/b.obj", {(root_ / "elsewhere").string()}, "file");
+  EXPECT_TRUE(path.ok());
+  // A sibling whose name starts like an allowed folder is not inside it.
+  fs::create_directories(root_ / "elsewhere2");
+  std::ofstream(root_ / "elsewhere2" / "c.obj") << "v 0 0 0\n";
+  EXPECT_FALSE(resolve_graph_resource(graph(), "../elsewhere2/c.obj", {(root_ / "elsewhere").string()}, "file").ok());
+}
+
+TEST_F(ResourcePath, SymbolicLinksAreFollowedBeforeTheCheck) {
+  fs::create_symlink(root_ / "elsewhere" / "b.obj", root_ / "graphs" / "link.obj");
+  EXPECT_FALSE(resolve_graph_resource(graph(), "link.obj", {}, "file").ok());
+}
+
+}  // namespace
+}  // namespace shadetree
