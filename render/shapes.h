@@ -47,6 +47,8 @@ class Revolution {
   explicit Revolution(std::vector<glm::vec2> profile);
 
   const std::vector<glm::vec2>& profile() const { return profile_; }
+  // (radius, height) on the spline at profile parameter s in [0, 1].
+  glm::vec2 point_at(float s) const;
   std::optional<SurfaceHit> intersect(const Ray& ray, float t_min, float t_max) const;
 
  private:
@@ -55,7 +57,6 @@ class Revolution {
   struct Segment {
     float r0, h0, r1, h1, s0, s1;
   };
-  glm::vec2 point_at(float s) const;    // (radius, height) on the spline
   glm::vec2 tangent_at(float s) const;  // d(radius, height) / ds
   std::vector<glm::vec2> profile_;
   std::vector<Segment> segments_;

@@ -1,0 +1,163 @@
+// Mesh files (Assimp) and ray hits on meshes (Embree) against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include <glm/geometric.hpp>
+
+#include "render/mesh.h"
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeshFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() / ("shadetree-mesh-" + std::to_string(::getpid()));
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    const fs::path path = folder_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+  }
+
+  fs::path folder_;
+};
+
+// The cube [-1, 1]^3 as 12 counter-clockwise (seen from outside) triangles.
+const char* cube_obj = R"(v -1 -1 -1
+v 1 -1 -1
+v 1 1 -1
+v -1 1 -1
+v -1 -1 1
+v 1 -1 1
+v 1 1 1
+v -1 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 4 8 7 3
+f 1 5 8 4
+f 2 3 7 6
+)";
+
+void expect_error_naming(const Result<TriangleMesh>& mesh, const std::string& path, const std::string& words) {
+  ASSERT_FALSE(mesh.ok()) << path;
+  const std::string text = mesh.error().to_string();
+  EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+  EXPECT_NE(text.find(path), std::string::npos) << text;
+  EXPECT_NE(text.find(words), std::string::npos) << text;
+}
+
+TEST_F(MeshFiles, ObjQuadsBecomeTrianglesWithoutInventedNormals) {
+  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", cube_obj));
+  ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
+  EXPECT_EQ(mesh->indices.size(), 36u);
+  EXPECT_TRUE(mesh->normals.empty());
+  EXPECT_TRUE(mesh->uvs.empty());
+}
+
+TEST_F(MeshFiles, AsciiAndBinaryPlyLoad) {
+  const std::string header =
+      "ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string ascii = header;
+  ascii.replace(ascii.find("%s"), 2, "ascii");
+  Result<TriangleMesh> text = load_mesh(write("tri.ply", ascii + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  ASSERT_TRUE(text.ok()) << text.error().to_string();
+  EXPECT_EQ(text->indices.size(), 3u);
+  std::string binary = header;
+  binary.replace(binary.find("%s"), 2, "binary_little_endian");
+  const float vertices[9] = {0, 0, 0, 2, 0, 0, 0, 2, 0};
+  binary.append(reinterpret_cast<const char*>(vertices), sizeof vertices);
+  const unsigned char count = 3;
+  const int face[3] = {0, 1, 2};
+  binary.append(reinterpret_cast<const char*>(&count), 1);
+  binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  Result<TriangleMesh> packed = load_mesh(write("tri-binary.ply", binary));
+  ASSERT_TRUE(packed.ok()) << packed.error().to_string();
+  ASSERT_EQ(packed->positions.size(), 3u);
+  float largest = 0.0f;
+  for (const glm::vec3& p : packed->positions) largest = std::max(largest, std::max(p.x, p.y));
+  EXPECT_EQ(largest, 2.0f);
+}
+
+TEST_F(MeshFiles, BadFilesGiveOneLineErrorsNamingTheFile) {
+  expect_error_naming(load_mesh((folder_ / "missing.obj").string()), "missing.obj", "no such mesh file");
+  expect_error_naming(load_mesh(folder_.string()), folder_.string(), "directory");
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"empty.obj", ""},
+           {"garbage.ply", std::string("\x01\x02\xff\xfe garbage\n\0\0", 16)},
+           {"out-of-range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"},
+           {"points.obj", "v 0 0 0\nv 1 0 0\n"},
+           {"nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}) {
+    const std::string path = write(name, text);
+    Result<TriangleMesh> mesh = load_mesh(path);
+    ASSERT_FALSE(mesh.ok()) << name;
+    EXPECT_EQ(mesh.error().to_string().find('\n'), std::string::npos);
+    EXPECT_NE(mesh.error().to_string().find(path), std::string::npos) << mesh.error().to_string();
+  }
+}
+
+TEST_F(MeshFiles, CubeHitsFromEachAxisGiveTheClosedFormAndTheOutwardNormal) {
+  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", cube_obj));
+  ASSERT_TRUE(mesh.ok());
+  const MeshIntersector cube(std::move(*mesh));
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      glm::vec3 origin(0.2f, 0.3f, 0.1f), direction(0.0f), normal(0.0f);
+      origin[axis] = 5.0f * side;
+      direction[axis] = -2.0f * side;  // not unit: t is along it
+      normal[axis] = side;
+      const auto hit = cube.intersect(Ray{origin, direction}, 0.0f, INFINITY);
+      ASSERT_TRUE(hit);
+      EXPECT_NEAR(hit->t, 2.0f, 1e-5f);
+      EXPECT_NEAR(glm::distance(hit->normal, normal), 0.0f, 1e-5f) << axis << " " << side;
+      EXPECT_GE(hit->uv.x + hit->uv.y, 0.0f);
+      EXPECT_LE(hit->uv.x + hit->uv.y, 1.0f) << "barycentric uv without texture coordinates";
+    }
+  EXPECT_FALSE(cube.intersect(Ray{{5, 5, 5}, {0, 0, -1}}, 0.0f, INFINITY));
+  EXPECT_FALSE(cube.intersect(Ray{{0, 0, 5}, {0, 0, -1}}, 0.0f, 3.9f));
+  const auto inside = cube.intersect(Ray{{0, 0, 0}, {0, 0, -1}}, 0.0f, INFINITY);
+  ASSERT_TRUE(inside);
+  EXPECT_NEAR(inside->t, 1.0f, 1e-5f);
+}
+
+TEST_F(MeshFiles, VertexNormalsAndTextureCoordinatesAreInterpolated) {
+  Result<TriangleMesh> mesh = load_mesh(write("smooth.obj",
+                                              "v -1 -1 0\nv 1 -1 0\nv 0 1 0\n"
+                                              "vn -1 0 1\nvn 1 0 1\nvn 0 0 1\n"
+                                              "vt 0 0\nvt 1 0\nvt 0 1\n"
+                                              "f 1/1/1 2/2/2 3/3/3\n"));
+  ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
+  ASSERT_EQ(mesh->normals.size(), mesh->positions.size());
+  const MeshIntersector triangle(std::move(*mesh));
+  // Halfway between the first two corners, on the bottom edge's midpoint
+  // lifted a little: the normal leans neither way, uv is near (0.5, 0).
+  const auto hit = triangle.intersect(Ray{{0, -0.99f, 3}, {0, 0, -1}}, 0.0f, INFINITY);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->normal.x, 0.0f, 1e-3f);
+  EXPECT_GT(hit->normal.z, 0.9f);
+  EXPECT_NEAR(hit->uv.x, 0.5f, 1e-2f);
+  EXPECT_NEAR(hit->uv.y, 0.005f, 1e-2f);
+}
+
+TEST(GalleryMesh, TrefoilLoadsWithNormalsAndUvs) {
+  Result<TriangleMesh> mesh = load_mesh(SHADETREE_SOURCE_DIR "/graphs/meshes/trefoil.obj");
+  ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
+  EXPECT_EQ(mesh->indices.size() / 3, 240u * 20u * 2u);
+  EXPECT_EQ(mesh->normals.size(), mesh->positions.size());
+  EXPECT_EQ(mesh->uvs.size(), mesh->positions.size());
+}
+
+}  // namespace
+}  // namespace shadetree
