@@ -126,6 +126,62 @@ TEST_F(Cli, UnwritableOutputsExitWithOneAndLeaveNoPartialFile) {
   EXPECT_TRUE(files().empty());
 }
 
+TEST_F(Cli, SurfaceGraphsRenderOnTheirSceneOrAPreviewObject) {
+  const std::string out = (directory_ / "donut.png").string();
+  CommandResult run = shadetree("render " + gallery + "donut_bumpy.json -o " + out + " --size 32x32 --spp 4");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("32x32 x 4 spp"), std::string::npos) << run.err;
+  for (const char* object : {"sphere", "torus", "plane", "box"}) {
+    run = shadetree("render " + gallery + "donut_spotted.json -o " + out + " --size 16x16 --object " + object);
+    EXPECT_EQ(run.status, 0) << object << ": " << run.err;
+  }
+  run = shadetree("render " + gallery + "donut_spotted.json -o " + out + " --size 16x16 --object " + gallery +
+                  "meshes/trefoil.obj");
+  EXPECT_EQ(run.status, 0) << run.err;
+}
+
+TEST_F(Cli, FramesRenderANumberedSequenceFromOneKernel) {
+  const std::string pattern = (directory_ / "corona.##.png").string();
+  const CommandResult run = shadetree("render " + gallery + "corona.json -o " + pattern + " --size 8x8 --frames 3..5");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"corona.03.png", "corona.04.png", "corona.05.png"}));
+  EXPECT_NE(run.err.find("frame 3 of 3"), std::string::npos) << run.err;
+  EXPECT_EQ(shadetree("render " + gallery + "corona.json -o " + pattern + " --frames 5..3").status, 2);
+}
+
+TEST_F(Cli, BadScenesExitWithTwoOneLineAndNoOutput) {
+  const std::string out = (directory_ / "out.png").string();
+  const std::string header = R"({"format": "shadetree-graph", "version": 1, "kind": "surface", "nodes": [],
+      "outputs": {"color": [1, 1, 1]}, "render": {"scene": )";
+  fs::create_directories(directory_ / "inner");
+  std::ofstream(directory_ / "secret.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(directory_ / "broken.obj") << "v 0 0 0\nf 1 2 7\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"objects": [{"type": "teapot"}]})", "unknown type \"teapot\""},
+      {R"({"objects": [{"type": "mesh", "file": "missing.obj"}]})", "no such mesh file"},
+      {R"({"objects": [{"type": "mesh", "file": "../secret.obj"}]})", "outside the graph's folder"},
+      {R"({"objects": [{"type": "mesh", "file": "../broken.obj"}]})", "outside the graph's folder"},
+      {R"({"camera": {"position": [0, 0, 0], "target": [0, 0, 0]}, "objects": [{"type": "sphere"}]})", "must differ"},
+      {R"({"objects": [{"type": "torus", "minor_radius": 1e39}]})", "32-bit float"}};
+  for (const auto& [scene, words] : cases) {
+    const fs::path graph = directory_ / "inner" / "scene.json";
+    std::ofstream(graph) << header << scene << "}}";
+    const CommandResult run = shadetree("render " + graph.string() + " -o " + out + " --size 8x8");
+    EXPECT_EQ(run.status, 2) << scene << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find(words), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // Allowed by --search-path, the broken mesh is read, and refused for what it is.
+  const fs::path graph = directory_ / "inner" / "scene.json";
+  std::ofstream(graph) << header << R"({"objects": [{"type": "mesh", "file": "../broken.obj"}]})" << "}}";
+  const CommandResult run =
+      shadetree("render " + graph.string() + " -o " + out + " --size 8x8 --search-path " + directory_.string());
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_NE(run.err.find("broken.obj"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, RenderWritesTheImageAndASummary) {
   const std::string out = (directory_ / "marble.png").string();
   const CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 32x16 --threads 2");
