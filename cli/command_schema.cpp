@@ -66,6 +66,57 @@ json graph_schema() {
                            {"outputs", outputs}}},
                          {"additionalProperties", false}};
   const json pair = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 2}};
+  const json triple = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 3}, {"maxItems", 3}};
+  const json colour = {{"oneOf", {{{"type", "number"}, {"minimum", 0}}, triple}}};
+  const json transform = {{"type", "object"},
+                          {"properties",
+                           {{"translate", triple},
+                            {"rotate", triple},
+                            {"scale", {{"oneOf", {{{"type", "number"}}, triple}}}}}},
+                          {"additionalProperties", false}};
+  const json object = {
+      {"type", "object"},
+      {"required", {"type"}},
+      {"properties",
+       {{"type", {{"enum", {"sphere", "torus", "plane", "box", "revolution", "mesh"}}}},
+        {"id", {{"type", "integer"}, {"minimum", 0}, {"maximum", 1000000}}},
+        {"doc", {{"type", "string"}}},
+        {"transform", transform},
+        {"radius", {{"type", "number"}, {"exclusiveMinimum", 0}}},
+        {"major_radius", {{"type", "number"}, {"exclusiveMinimum", 0}}},
+        {"minor_radius", {{"type", "number"}, {"exclusiveMinimum", 0}}},
+        {"size", triple},
+        {"profile", {{"type", "array"}, {"items", pair}, {"minItems", 2}, {"maxItems", max_profile_points}}},
+        {"file", {{"type", "string"}, {"minLength", 1}}}}},
+      {"additionalProperties", false}};
+  const json light = {{"type", "object"},
+                      {"required", {"type"}},
+                      {"properties",
+                       {{"type", {{"enum", {"directional", "point"}}}},
+                        {"direction", triple},
+                        {"position", triple},
+                        {"color", colour},
+                        {"intensity", {{"type", "number"}, {"minimum", 0}}}}},
+                      {"additionalProperties", false}};
+  const json scene = {
+      {"type", "object"},
+      {"required", {"objects"}},
+      {"properties",
+       {{"camera", {{"type", "object"},
+                    {"properties",
+                     {{"position", triple},
+                      {"target", triple},
+                      {"up", triple},
+                      {"fov", {{"type", "number"}, {"exclusiveMinimum", 0}, {"exclusiveMaximum", 180}}},
+                      {"orthographic", {{"type", "number"}, {"exclusiveMinimum", 0}}}}},
+                    {"additionalProperties", false}}},
+        {"objects", {{"type", "array"}, {"items", object}, {"minItems", 1}, {"maxItems", max_scene_objects}}},
+        {"lights", {{"type", "array"}, {"items", light}, {"maxItems", max_scene_lights}}},
+        {"background", colour},
+        {"ambient", colour},
+        {"lighting", {{"enum", {"lit", "none"}}}},
+        {"shadows", {{"type", "boolean"}}}}},
+      {"additionalProperties", false}};
   const json render = {
       {"type", "object"},
       {"properties",
@@ -76,7 +127,8 @@ json graph_schema() {
                     {"properties", {{"min", pair}, {"max", pair}}},
                     {"additionalProperties", false}}},
         {"z", {{"type", "number"}}},
-        {"frame", {{"type", "number"}}}}},
+        {"frame", {{"type", "number"}}},
+        {"scene", scene}}},
       {"additionalProperties", false}};
   json kinds = json::array();
   for (GraphKind kind : all_graph_kinds) kinds.push_back(graph_kind_name(kind));
