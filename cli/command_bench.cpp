@@ -3,9 +3,12 @@
 // one thread and at all threads, as medians of repeated runs after a
 // warm-up. Samples are the texture driver's (a WxH grid over the graph's
 // render domain), fed straight to the kernel so that every graph kind can
-// be measured.
+// be measured. Surface graphs are also rendered by the surface driver on
+// their scene, with the time of each stage and the shading stage's
+// throughput against the kernel's own on the texture samples.
 #include <algorithm>
 #include <chrono>
+#include <tuple>
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +21,8 @@
 #include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
+#include "render/preview_scene.h"
+#include "render/surface_driver.h"
 #include "render/texture_driver.h"
 #include "render/thread_bindings.h"
 
@@ -81,6 +86,31 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Tex
   return static_cast<double>(samples.count) / seconds[seconds.size() / 2];
 }
 
+// A surface render's stages (seconds of thread time) and its wall time:
+// those of the run with the median wall time, after one warm-up run.
+struct SurfaceTiming {
+  SurfaceRenderStats stats;
+  double seconds = 0;
+};
+
+SurfaceTiming measure_surface(const Kernel& kernel, const LoadedGraph& loaded, const Scene& scene,
+                              const SurfaceView& view, int threads, int repetitions) {
+  const Camera camera(scene.desc().camera, view.width, view.height);
+  SurfaceRenderOptions options;
+  options.threads = threads;
+  std::vector<SurfaceTiming> runs;
+  for (int r = 0; r <= repetitions; ++r) {
+    SurfaceTiming timing;
+    const auto start = std::chrono::steady_clock::now();
+    render_surface(kernel, loaded.params, scene, camera, view, options, &timing.stats);
+    timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (r > 0) runs.push_back(timing);
+  }
+  std::nth_element(runs.begin(), runs.begin() + runs.size() / 2, runs.end(),
+                   [](const SurfaceTiming& a, const SurfaceTiming& b) { return a.seconds < b.seconds; });
+  return runs[runs.size() / 2];
+}
+
 ExitStatus bench(const BenchArguments& arguments) {
   // Start the JIT first, so that no graph's cold compile includes that
   // one-time cost (it is measured separately: see docs/architecture.md).
@@ -94,6 +124,7 @@ ExitStatus bench(const BenchArguments& arguments) {
   if (!arguments.json)
     std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
                 "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
+  std::vector<std::string> surface_rows;
   for (const std::string& file : arguments.files) {
     Result<LoadedGraph> loaded = load_and_compile(file, {});
     if (!loaded) return report(loaded.error());
@@ -121,6 +152,40 @@ ExitStatus bench(const BenchArguments& arguments) {
     const double jit_1t = measure(**jit, loaded->params, *view, samples, 1, arguments.repetitions);
     const double jit_mt = measure(**jit, loaded->params, *view, samples, all, arguments.repetitions);
     const std::string name = loaded->graph->name;
+    nlohmann::ordered_json surface = nlohmann::json::array();
+    if (loaded->graph->kind == GraphKind::surface) {
+      Result<Scene> scene = Scene::build(loaded->graph->render.scene ? *loaded->graph->render.scene
+                                                                     : SceneDesc(*preview_scene("sphere")),
+                                         file, {});
+      if (!scene) return report(scene.error());
+      SurfaceView surface_view;
+      surface_view.width = view->width;
+      surface_view.height = view->height;
+      for (const auto& [backend, kernel, kernel_sps] :
+           {std::tuple<const char*, const Kernel*, double>{"jit", jit->get(), jit_1t},
+            std::tuple<const char*, const Kernel*, double>{"interp", interp.get(), interp_1t}}) {
+        for (int threads : {1, all}) {
+          const SurfaceTiming timing =
+              measure_surface(*kernel, *loaded, *scene, surface_view, threads, arguments.repetitions);
+          const double shading_sps = static_cast<double>(timing.stats.visible_samples) / timing.stats.shading_seconds;
+          surface.push_back({{"backend", backend},
+                             {"threads", threads},
+                             {"visible_samples", timing.stats.visible_samples},
+                             {"visibility_s", timing.stats.visibility_seconds},
+                             {"shading_s", timing.stats.shading_seconds},
+                             {"lighting_s", timing.stats.lighting_seconds},
+                             {"total_s", timing.seconds},
+                             {"shading_sps", shading_sps},
+                             {"shading_vs_kernel", shading_sps / kernel_sps}});
+          char row[256];
+          std::snprintf(row, sizeof row, "%-16s %-7s %7s %9ld %9.3f %9.3f %9.3f %9.3f %9.2fM %8.2fx", name.c_str(),
+                        backend, threads == 1 ? "1" : "all", timing.stats.visible_samples,
+                        timing.stats.visibility_seconds, timing.stats.shading_seconds, timing.stats.lighting_seconds,
+                        timing.seconds, shading_sps / 1e6, shading_sps / kernel_sps);
+          surface_rows.push_back(row);
+        }
+      }
+    }
     if (arguments.json) {
       results.push_back({{"graph", name},
                          {"samples", samples.count},
@@ -131,7 +196,8 @@ ExitStatus bench(const BenchArguments& arguments) {
                          {"interp_sps_1t", interp_1t},
                          {"interp_sps_mt", interp_mt},
                          {"jit_sps_1t", jit_1t},
-                         {"jit_sps_mt", jit_mt}});
+                         {"jit_sps_mt", jit_mt},
+                         {"surface_driver", surface}});
     } else {
       std::printf("%-16s %8zu %5d->%-5zu %9.2f %9.3f %10.2fM %10.2fM %10.2fM %10.2fM %8.1fx\n", name.c_str(),
                   samples.count, loaded->instructions_before_optimization, loaded->ir.code.size(),
@@ -139,7 +205,15 @@ ExitStatus bench(const BenchArguments& arguments) {
                   jit_1t / 1e6, jit_mt / 1e6, jit_1t / interp_1t);
     }
   }
-  if (arguments.json) std::printf("%s\n", results.dump(2).c_str());
+  if (arguments.json) {
+    std::printf("%s\n", results.dump(2).c_str());
+  } else if (!surface_rows.empty()) {
+    // Stage times are thread time summed over threads; total is wall time.
+    std::printf("\nsurface driver (stage times: thread seconds; shading throughput vs the kernel's 1-thread rate)\n");
+    std::printf("%-16s %-7s %7s %9s %9s %9s %9s %9s %10s %9s\n", "graph", "backend", "threads", "visible",
+                "visib. s", "shading s", "light. s", "total s", "shading", "vs kernel");
+    for (const std::string& row : surface_rows) std::printf("%s\n", row.c_str());
+  }
   return ExitStatus::ok;
 }
 }  // namespace

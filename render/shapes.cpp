@@ -190,33 +190,40 @@ glm::vec2 Revolution::tangent_at(float s) const {
 std::optional<SurfaceHit> Revolution::intersect(const Ray& ray, float t_min, float t_max) const {
   const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
   const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-  // The bounding cylinder and slab.
-  {
-    const double a = dx * dx + dz * dz, b = ox * dx + oz * dz, c = ox * ox + oz * oz - double(max_radius_) * max_radius_;
-    double enter = t_min, leave = t_max;
-    if (a > 0.0) {
-      const double discriminant = b * b - a * c;
-      if (discriminant < 0.0) return std::nullopt;
-      const double root = std::sqrt(discriminant);
-      enter = std::max(enter, (-b - root) / a);
-      leave = std::min(leave, (-b + root) / a);
-    } else if (c > 0.0) {
-      return std::nullopt;
-    }
-    if (dy != 0.0) {
-      double t0 = (min_height_ - oy) / dy, t1 = (max_height_ - oy) / dy;
-      if (t0 > t1) std::swap(t0, t1);
-      enter = std::max(enter, t0);
-      leave = std::min(leave, t1);
-    } else if (oy < min_height_ || oy > max_height_) {
-      return std::nullopt;
-    }
-    if (enter > leave) return std::nullopt;
+  // The bounding cylinder and slab, then per segment: only those whose
+  // heights the ray passes through inside them, and whose widest radius
+  // reaches the ray's closest approach to the axis.
+  double enter = t_min, leave = t_max;
+  const double a = dx * dx + dz * dz, b = ox * dx + oz * dz, c = ox * ox + oz * oz - double(max_radius_) * max_radius_;
+  if (a > 0.0) {
+    const double discriminant = b * b - a * c;
+    if (discriminant < 0.0) return std::nullopt;
+    const double root = std::sqrt(discriminant);
+    enter = std::max(enter, (-b - root) / a);
+    leave = std::min(leave, (-b + root) / a);
+  } else if (c > 0.0) {
+    return std::nullopt;
   }
+  if (dy != 0.0) {
+    double t0 = (min_height_ - oy) / dy, t1 = (max_height_ - oy) / dy;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  } else if (oy < min_height_ || oy > max_height_) {
+    return std::nullopt;
+  }
+  if (enter > leave) return std::nullopt;
+  const double y_low = std::min(oy + enter * dy, oy + leave * dy), y_high = std::max(oy + enter * dy, oy + leave * dy);
+  const double t_closest = a > 0.0 ? std::clamp(-b / a, enter, leave) : enter;
+  const double x_closest = ox + t_closest * dx, z_closest = oz + t_closest * dz;
+  const double closest = std::sqrt(x_closest * x_closest + z_closest * z_closest);
   double best = t_max;
   const Segment* hit_segment = nullptr;
   double hit_u = 0.0;
   for (const Segment& segment : segments_) {
+    if (std::max(segment.h0, segment.h1) < y_low || std::min(segment.h0, segment.h1) > y_high ||
+        std::max(segment.r0, segment.r1) < closest)
+      continue;
     const double dh = segment.h1 - segment.h0, dr = segment.r1 - segment.r0;
     if (dh == 0.0) {  // an annulus in the plane y = h0
       if (dy == 0.0) continue;
