@@ -64,6 +64,9 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
                                      const RenderArguments& arguments) {
   const Graph& graph = *loaded.graph;
   if (graph.kind == GraphKind::texture) {
+    if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
+      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
+                        "--object, --spp and --no-shadows are for surface graphs; this is a texture graph"};
     Result<TextureView> view = texture_view(graph, arguments.size, arguments.frame);
     if (!view) return view.error();
     return FrameRenderer([&, view = *view](float frame, std::string* summary) {

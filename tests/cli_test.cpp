@@ -138,6 +138,9 @@ TEST_F(Cli, SurfaceGraphsRenderOnTheirSceneOrAPreviewObject) {
   run = shadetree("render " + gallery + "donut_spotted.json -o " + out + " --size 16x16 --object " + gallery +
                   "meshes/trefoil.obj");
   EXPECT_EQ(run.status, 0) << run.err;
+  run = shadetree("render " + gallery + "marble.json -o " + out + " --size 16x16 --object torus");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("for surface graphs"), std::string::npos) << run.err;
 }
 
 TEST_F(Cli, FramesRenderANumberedSequenceFromOneKernel) {
