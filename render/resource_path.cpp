@@ -22,7 +22,12 @@ bool lies_under(const fs::path& path, const fs::path& folder) {
 Result<std::string> resolve_graph_resource(const std::string& graph_file, const std::string& path,
                                            const std::vector<std::string>& search_paths, const std::string& what) {
   std::error_code error;
-  const fs::path graph_folder = fs::weakly_canonical(fs::absolute(fs::path(graph_file).parent_path(), error), error);
+  // A graph named without a folder ("g.json") lies in the current one; an
+  // empty folder would make every path lie "under" it.
+  fs::path folder = fs::path(graph_file).parent_path();
+  if (folder.empty()) folder = ".";
+  const fs::path graph_folder = fs::weakly_canonical(fs::absolute(folder, error), error);
+  if (error) return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {}, what + " \"" + path + "\": " + error.message()};
   const fs::path written(path);
   const fs::path resolved =
       fs::weakly_canonical(written.is_absolute() ? written : graph_folder / written, error);

@@ -45,6 +45,19 @@ TEST_F(ResourcePath, RefusesPathsThatLeaveTheGraphFolder) {
   }
 }
 
+// Regression: a graph file named without a folder had an empty folder,
+// under which every path was taken to lie.
+TEST_F(ResourcePath, GraphInTheCurrentFolderStillConfinesPaths) {
+  const fs::path previous = fs::current_path();
+  fs::current_path(root_ / "graphs");
+  Result<std::string> inside = resolve_graph_resource("g.json", "meshes/a.obj", {}, "file");
+  Result<std::string> outside = resolve_graph_resource("g.json", "../elsewhere/b.obj", {}, "file");
+  fs::current_path(previous);
+  EXPECT_TRUE(inside.ok());
+  ASSERT_FALSE(outside.ok());
+  EXPECT_NE(outside.error().message.find("outside the graph's folder"), std::string::npos);
+}
+
 TEST_F(ResourcePath, SearchPathsAllowOtherFolders) {
   Result<std::string> path =
       resolve_graph_resource(graph(), "../elsewhere/b.obj", {(root_ / "elsewhere").string()}, "file");
