@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "graph/number_list.h"
 #include "graph/parse.h"
 #include "interp/interpreter.h"
@@ -38,6 +40,11 @@ Result<TextureView> texture_view(const Graph& graph, const std::string& size, st
   }
   if (frame) view.frame = *frame;
   return view;
+}
+
+void add_search_path_option(CLI::App& command, std::vector<std::string>& search_paths) {
+  command.add_option("--search-path", search_paths,
+                     "a folder outside the graph's own from which the graph may read files (repeatable)");
 }
 
 Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const ShadeIR& ir, int width) {

@@ -13,6 +13,10 @@
 #include "ir/kernel.h"
 #include "render/texture_driver.h"
 
+namespace CLI {
+class App;
+}
+
 namespace shadetree {
 
 // "512x256" -> {512, 256}, within the image size limit.
@@ -24,6 +28,10 @@ Result<std::vector<float>> parse_floats(const std::string& text, std::size_t cou
 // The texture view of a graph's render settings with --size and --frame
 // applied (empty size / no frame: keep the graph's).
 Result<TextureView> texture_view(const Graph& graph, const std::string& size, std::optional<float> frame);
+
+// --search-path DIR (repeatable): a folder outside the graph's own from
+// which it may read files (meshes, images).
+void add_search_path_option(CLI::App& command, std::vector<std::string>& search_paths);
 
 // The kernel of `ir` from the named backend ("jit" or "interp"); width is
 // the JIT's vector width (0: the host's).

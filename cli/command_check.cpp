@@ -6,18 +6,21 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "pipeline/compile_graph.h"
+#include "render/graph_images.h"
 
 namespace shadetree {
 
 void add_check_command(CLI::App& app, CommandRunner& run) {
   auto* command = app.add_subcommand("check", "type-check graph files");
   auto files = std::make_shared<std::vector<std::string>>();
+  auto search_paths = std::make_shared<std::vector<std::string>>();
   command->add_option("files", *files, "graph files")->required();
-  command->callback([&run, files] {
-    run = [files] {
+  add_search_path_option(*command, *search_paths);
+  command->callback([&run, files, search_paths] {
+    run = [files, search_paths] {
       ExitStatus worst = ExitStatus::ok;
       for (const std::string& file : *files) {
-        Result<LoadedGraph> loaded = load_and_compile(file, {});
+        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_image_reader(*search_paths));
         if (!loaded) {
           const ExitStatus status = report(loaded.error());
           if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;

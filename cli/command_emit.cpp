@@ -5,8 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/arguments.h"
 #include "cli/commands.h"
 #include "pipeline/compile_graph.h"
+#include "render/graph_images.h"
 #include "jit/jit_compiler.h"
 
 namespace shadetree {
@@ -17,6 +19,7 @@ struct EmitArguments {
   bool graph = false, llvm = false, assembly = false, after_each_pass = false;
   int width = 0;
   std::vector<std::string> assignments;
+  std::vector<std::string> search_paths;
 };
 
 ExitStatus emit(const EmitArguments& arguments) {
@@ -25,7 +28,7 @@ ExitStatus emit(const EmitArguments& arguments) {
     print_each_pass = [](const char* pass, const ShadeIR& ir) {
       std::printf("; after %s: %zu instructions\n%s\n", pass, ir.code.size(), format_shade_ir(ir).c_str());
     };
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass);
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass, graph_image_reader(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   if (arguments.after_each_pass) return ExitStatus::ok;
   if (arguments.graph) {
@@ -57,6 +60,7 @@ void add_emit_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--width", arguments->width, "vector width: 4, 8 or 16 (default: the host's widest)")
       ->check(CLI::IsMember({4, 8, 16}));
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
+  add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] {
     if (!arguments->graph && !arguments->llvm && !arguments->assembly)
       throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm");

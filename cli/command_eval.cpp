@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "pipeline/compile_graph.h"
+#include "render/graph_images.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 
@@ -20,6 +21,7 @@ struct EvalArguments {
   std::vector<std::string> inputs;
   std::string size;
   std::vector<std::string> assignments;
+  std::vector<std::string> search_paths;
   std::optional<float> frame;
 };
 
@@ -48,7 +50,7 @@ Status apply_input(const std::string& assignment, SampleBuffers& samples, Unifor
 }
 
 ExitStatus evaluate(const EvalArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_image_reader(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   auto at = parse_floats(arguments.at, 3, "--at");
   if (!at) return report(at.error());
@@ -105,6 +107,7 @@ void add_eval_command(CLI::App& app, CommandRunner& run) {
                       "image size WIDTHxHEIGHT that sets filter_width as render would (default: the graph's)");
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
   command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
+  add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] { run = [arguments] { return evaluate(*arguments); }; });
 }
 

@@ -10,6 +10,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "pipeline/compile_graph.h"
+#include "render/graph_images.h"
 #include "pipeline/tiered_kernel.h"
 #include "render/image_output.h"
 #include "render/preview_scene.h"
@@ -161,7 +162,7 @@ std::string frame_path(const std::string& pattern, int frame) {
 }
 
 ExitStatus render(const RenderArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments);
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_image_reader(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   std::vector<std::pair<float, std::string>> frames;  // frame number, output path
   if (arguments.frames.empty()) {
@@ -244,8 +245,7 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--object", arguments->object,
                       "surface graphs: render on a preview object: sphere, torus, plane, box or a mesh file "
                       "(.obj, .ply) instead of the graph's scene");
-  command->add_option("--search-path", arguments->search_paths,
-                      "a folder outside the graph's own from which the graph may read files (repeatable)");
+  add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
 }
 

@@ -36,7 +36,7 @@ struct Callee {
 
 class Checker {
  public:
-  explicit Checker(const Graph& graph) : graph_(graph) {}
+  Checker(const Graph& graph, const ImageReader& read_image) : graph_(graph), read_image_(read_image) {}
 
   CheckedGraph run(std::shared_ptr<const Graph> graph) {
     for (std::size_t i = 0; i < graph_.params.size(); ++i) check_param_declaration(graph_.params[i]);
@@ -383,10 +383,32 @@ class Checker {
       return found == node_.attributes.end() ? nullptr : &found->second;
     }
     [[noreturn]] void fail(const std::string& message) const override { checker_.fail(node_.id, {}, message); }
+    const Image& image_file(const std::string& name) const override {
+      const AttributeValue* value = find(name);
+      if (!value || value->kind != AttributeValue::Kind::text || value->text.empty())
+        fail("attribute \"" + name + "\" must be the path of an image file");
+      if (!checker_.read_image_) fail("image files cannot be read here (attribute \"" + name + "\")");
+      Result<Image> read = checker_.read_image_(checker_.graph_.file, value->text);
+      if (!read) {
+        Diagnostic error = read.error();
+        error.file = checker_.graph_.file;
+        error.node = node_.id;
+        throw CheckError{std::move(error)};
+      }
+      if (read->width < 1 || read->height < 1 || read->channels < 1 ||
+          read->pixels.size() != static_cast<std::size_t>(read->width) * read->height * read->channels)
+        fail("image \"" + value->text + "\" has no pixels");
+      if (static_cast<long long>(read->width) * read->height > max_image_pixels)
+        fail("image \"" + value->text + "\" is " + std::to_string(read->width) + "x" + std::to_string(read->height) +
+             "; images of up to " + std::to_string(max_image_pixels) + " pixels (1024x1024) can be sampled");
+      image_ = std::move(*read);
+      return image_;
+    }
 
    private:
     const Checker& checker_;
     const Node& node_;
+    mutable Image image_;
   };
 
   // Validates attribute names and required attributes, then lays out their
@@ -459,6 +481,7 @@ class Checker {
 
 
   const Graph& graph_;
+  const ImageReader& read_image_;
   std::map<std::string, int> function_index_;
   std::vector<CheckedFunction> functions_;
   std::vector<State> function_state_;
@@ -468,9 +491,9 @@ class Checker {
 }  // namespace
 
 
-Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph) {
+Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const ImageReader& read_image) {
   try {
-    return Checker(*graph).run(graph);
+    return Checker(*graph, read_image).run(graph);
   } catch (const CheckError& error) {
     return error.diagnostic;
   }

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "nodes/image.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -62,7 +64,13 @@ struct CheckedGraph {
 // Functions calling functions: deeper chains are reported, not recursed into.
 inline constexpr int max_function_nesting = 64;
 
-Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph);
+// Reads the image file `path` names, as written in the graph file
+// `graph_file`, for ops that sample images (render/graph_images.h reads
+// them with OpenImageIO). A graph that names an image and is checked
+// without a reader is an error.
+using ImageReader = std::function<Result<Image>(const std::string& graph_file, const std::string& path)>;
+
+Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const ImageReader& read_image = {});
 
 
 // Validates a value given for a param (from --set or an editor) against

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/image.h"
 #include "nodes/type.h"
 
 namespace shadetree {
@@ -43,6 +44,9 @@ class Attributes {
   // attribute left out is reported by the checker before layout).
   virtual const AttributeValue* find(const std::string& name) const = 0;
   [[noreturn]] virtual void fail(const std::string& message) const = 0;
+  // The image file the attribute `name` names, read once per compile (at
+  // most max_image_pixels).
+  virtual const Image& image_file(const std::string& name) const = 0;
 
   // A list of `minimum` to max_table_entries numbers or equally long number
   // arrays (1 to 3 components), appended to `data`; returns the components.

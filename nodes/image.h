@@ -1,4 +1,5 @@
-// An image as the drivers make it and image_output writes it.
+// An image in memory: what the drivers render, what image files hold, and
+// what the `image` op samples (its pixels become the op's attribute data).
 #pragma once
 
 #include <vector>
@@ -8,7 +9,7 @@ namespace shadetree {
 struct Image {
   int width = 0;
   int height = 0;
-  int channels = 0;           // 3 (rgb) or 4 (rgba)
+  int channels = 0;           // 1 (grey) to 4 (rgba)
   std::vector<float> pixels;  // row-major, top row first, interleaved
 };
 

@@ -28,7 +28,7 @@ namespace shadetree {
   X(lt) X(le) X(gt) X(ge) X(eq) X(ne) X(and_) X(or_) X(not_) X(select)       \
   X(if_)                                                                      \
   /* splines and tables (nodes/ops/splines.h) */                              \
-  X(spline) X(color_table) X(table1d) X(table2d)                              \
+  X(spline) X(color_table) X(table1d) X(table2d) X(image)                     \
   /* soft objects (nodes/ops/soft_objects.h) */                               \
   X(sphere) X(box) X(torus) X(intersect) X(union_) X(difference)             \
   X(complement)

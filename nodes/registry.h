@@ -48,6 +48,7 @@ enum class AttributeKind : unsigned char {
   value_list,    // a list of numbers or of 2/3-arrays (knots, colours)
   number_grid,   // a list of equally long lists of numbers (2D tables)
   number_pair,   // [lo, hi]
+  image_file,    // the path of an image file, relative to the graph file
 };
 
 struct AttributeSpec {

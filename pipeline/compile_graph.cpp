@@ -31,10 +31,11 @@ PassObserver verified_in_debug_builds(const PassObserver& observe) {
 }
 
 Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path,
-                                   const std::vector<std::string>& assignments, const PassObserver& observe) {
+                                   const std::vector<std::string>& assignments, const PassObserver& observe,
+                                   const ImageReader& read_image) {
   if (!parsed) return parsed.error();
   auto graph = std::make_shared<const Graph>(std::move(*parsed));
-  Result<CheckedGraph> checked = check_graph(graph);
+  Result<CheckedGraph> checked = check_graph(graph, read_image);
   if (!checked) return checked.error();
   Result<ShadeIR> ir = lower(*checked);
   if (!ir) return ir.error();
@@ -74,13 +75,14 @@ Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path
 }  // namespace
 
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
-                                     const PassObserver& observe) {
-  return compile_parsed(load_graph(path), path, assignments, observe);
+                                     const PassObserver& observe, const ImageReader& read_image) {
+  return compile_parsed(load_graph(path), path, assignments, observe, read_image);
 }
 
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
-                                       const std::vector<std::string>& assignments, const PassObserver& observe) {
-  return compile_parsed(parse_graph(json, file), file, assignments, observe);
+                                       const std::vector<std::string>& assignments, const PassObserver& observe,
+                                       const ImageReader& read_image) {
+  return compile_parsed(parse_graph(json, file), file, assignments, observe, read_image);
 }
 
 }  // namespace shadetree

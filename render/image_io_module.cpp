@@ -40,15 +40,26 @@ extern "C" int shadetree_image_io_write(const char* format_path, const char* fil
 }
 
 // Reads any image OpenImageIO knows as float pixels (malloc'ed; release
-// with shadetree_image_io_free). Null on failure.
-extern "C" float* shadetree_image_io_read(const char* path, int* width, int* height, int* channels, char* error,
-                                          std::size_t error_size) {
+// with shadetree_image_io_free). Null on failure, and for an image of more
+// than `max_pixels` pixels (when positive), before its pixels are read.
+extern "C" float* shadetree_image_io_read(const char* path, long long max_pixels, int* width, int* height,
+                                          int* channels, char* error, std::size_t error_size) {
   auto input = OIIO::ImageInput::open(path);
   if (!input) {
     set_error(error, error_size, OIIO::geterror());
     return nullptr;
   }
   const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
+    set_error(error, error_size, "the image has no pixels");
+    return nullptr;
+  }
+  if (max_pixels > 0 && static_cast<long long>(spec.width) * spec.height > max_pixels) {
+    set_error(error, error_size,
+              std::to_string(spec.width) + "x" + std::to_string(spec.height) + " pixels, more than the " +
+                  std::to_string(max_pixels) + " allowed");
+    return nullptr;
+  }
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels;
   auto* pixels = static_cast<float*>(std::malloc(count * sizeof(float)));
   if (!pixels || !input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels)) {

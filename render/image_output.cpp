@@ -20,7 +20,7 @@ std::string lowercase_extension(const std::string& path) {
 // from the folder of the running executable.
 struct ImageIoModule {
   int (*write)(const char*, const char*, const float*, int, int, int, int, char*, std::size_t) = nullptr;
-  float* (*read)(const char*, int*, int*, int*, char*, std::size_t) = nullptr;
+  float* (*read)(const char*, long long, int*, int*, int*, char*, std::size_t) = nullptr;
   void (*release)(float*) = nullptr;
   std::string error;
 };
@@ -84,12 +84,12 @@ Status write_image(const Image& image, const std::string& path) {
   return success();
 }
 
-Result<Image> read_image(const std::string& path) {
+Result<Image> read_image(const std::string& path, long long max_pixels) {
   const ImageIoModule& module = image_io_module();
   if (!module.error.empty()) return failure(module.error);
   Image image;
   char reason[512] = "";
-  float* pixels = module.read(path.c_str(), &image.width, &image.height, &image.channels, reason, sizeof reason);
+  float* pixels = module.read(path.c_str(), max_pixels, &image.width, &image.height, &image.channels, reason, sizeof reason);
   if (!pixels) return failure("cannot read image \"" + path + "\": " + reason);
   image.pixels.assign(pixels, pixels + static_cast<std::size_t>(image.width) * image.height * image.channels);
   module.release(pixels);

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "graph/diagnostic.h"
-#include "render/image.h"
+#include "nodes/image.h"
 
 namespace shadetree {
 
@@ -18,7 +18,9 @@ Status check_image_path(const std::string& path);
 // chosen by the extension of `path`.
 Status write_image(const Image& image, const std::string& path);
 
-// For tests and tools: reads any OpenImageIO format as float pixels.
-Result<Image> read_image(const std::string& path);
+// Reads any OpenImageIO format as float pixels; an image of more than
+// `max_pixels` pixels (when positive) is an error, found before its
+// pixels are read.
+Result<Image> read_image(const std::string& path, long long max_pixels = 0);
 
 }  // namespace shadetree

@@ -11,7 +11,7 @@
 
 #include "ir/kernel.h"
 #include "render/camera.h"
-#include "render/image.h"
+#include "nodes/image.h"
 #include "render/scene.h"
 
 namespace shadetree {

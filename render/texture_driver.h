@@ -8,7 +8,7 @@
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
 #include "ir/kernel.h"
-#include "render/image.h"
+#include "nodes/image.h"
 
 namespace shadetree {
 

@@ -185,6 +185,35 @@ TEST_F(Cli, BadScenesExitWithTwoOneLineAndNoOutput) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(Cli, ImageGraphsReadTheirFilesAndRefuseBadOnes) {
+  const std::string out = (directory_ / "out.png").string();
+  fs::create_directories(directory_ / "inner");
+  std::ofstream(directory_ / "inner" / "broken.png") << "not a png";
+  ASSERT_TRUE(write_image(Image{2, 1, 3, {0.25f, 0.5f, 1.0f, 1.0f, 0.5f, 0.25f}}, (directory_ / "outside.exr").string()).ok());
+  auto graph_naming = [&](const std::string& file) {
+    const fs::path graph = directory_ / "inner" / "image.json";
+    std::ofstream(graph) << R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "nodes": [
+        {"id": "uv", "op": "uv"}, {"id": "img", "op": "image", "in": {"uv": "uv"}, "file": ")" << file << R"("}],
+        "outputs": {"color": "img"}})";
+    return graph.string();
+  };
+  for (const std::string& file : {"missing.png", "broken.png", "../outside.exr"}) {
+    const CommandResult run = shadetree("render " + graph_naming(file) + " -o " + out + " --size 8x8");
+    EXPECT_EQ(run.status, 2) << file << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find("node \"img\""), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // Allowed by --search-path, the image is read: its left pixel at uv (0.25, 0.5).
+  const std::string graph = graph_naming("../outside.exr");
+  ASSERT_EQ(shadetree("check " + graph + " --search-path " + directory_.string()).status, 0);
+  const CommandResult run = shadetree("eval " + graph + " --at 0,0,0 --input uv=0.25,0.5 --search-path " + directory_.string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(nlohmann::json::parse(run.out)["outputs"]["color"], nlohmann::json::parse("[0.25, 0.5, 1.0]"));
+  EXPECT_EQ(shadetree("render " + graph + " -o " + out + " --size 8x8 --search-path " + directory_.string()).status, 0);
+  EXPECT_TRUE(fs::exists(out));
+}
+
 TEST_F(Cli, RenderWritesTheImageAndASummary) {
   const std::string out = (directory_ / "marble.png").string();
   const CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 32x16 --threads 2");

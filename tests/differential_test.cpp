@@ -12,6 +12,7 @@
 
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
+#include "support/test_images.h"
 #include "interp/interpreter.h"
 #include "ir/verify.h"
 #include "jit/jit_kernel.h"
@@ -114,10 +115,11 @@ std::string compare_backends(const std::string& name, const ShadeIR& ir, const s
 
 // Every generated program is verified after lowering and after each pass.
 Result<LoadedGraph> compile_text(const std::string& text) {
-  return compile_graph_text(text, "generated.json", {}, [&](const char* pass, const ShadeIR& ir) {
+  const PassObserver verify = [&](const char* pass, const ShadeIR& ir) {
     const std::string problem = verify_shade_ir(ir);
     EXPECT_EQ(problem, "") << "after " << pass << "\n" << format_shade_ir(ir) << "\n" << text;
-  });
+  };
+  return compile_graph_text(text, "generated.json", {}, verify, testing::test_image_reader());
 }
 
 // --- the gallery -------------------------------------------------------
@@ -126,7 +128,7 @@ Result<LoadedGraph> compile_text(const std::string& text) {
 class GalleryDifferential : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
-  Result<LoadedGraph> loaded = load_and_compile(GetParam(), {});
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(GetParam());
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   for (int width : {4, 8, 16})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
@@ -183,6 +185,7 @@ std::string attributes_for(OpId op) {
     case OpId::color_table: return R"(, "entries": [[1,0,0],[0,1,0],[0,0,1],[1,1,0]])";
     case OpId::table1d: return R"(, "values": [0, 0.8, 0.2, 1, 0.4], "domain": [-2, 3])";
     case OpId::table2d: return R"(, "values": [[0, 1, 0.5], [0.2, 0.9, 0.1]])";
+    case OpId::image: return R"(, "file": "5x3x3.png")";
     case OpId::noise: case OpId::turbulence: return R"(, "seed": 7)";
     default: return "";
   }
@@ -256,6 +259,17 @@ TEST(NodeDifferential, DensityInputAgreesInVolumes) {
       "outputs": {"density": "out"}})");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   EXPECT_EQ(compare_backends("density", loaded->ir, loaded->params, 16), "");
+}
+
+// Repeated and clamped lookups of a grey and an RGB image, at P.xy (which
+// the samples take far outside [0,1]).
+TEST(NodeDifferential, ImagesAgreeInBothWrapModes) {
+  Result<LoadedGraph> loaded = compile_text(std::string(header) + R"("nodes": [)" + preamble + R"(,
+      {"id": "a", "op": "image", "in": {"uv": "vec2_a"}, "file": "7x5x1.png", "wrap": "clamp"},
+      {"id": "b", "op": "image", "in": {"uv": "vec2_a"}, "file": "3x4x3.png"}],
+      "outputs": {"color": "a", "emission": "b"}})");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (int width : {4, 16}) EXPECT_EQ(compare_backends("images", loaded->ir, loaded->params, width), "");
 }
 
 TEST(NodeDifferential, ScalarArgumentsSplatToTheOpsType) {

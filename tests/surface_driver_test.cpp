@@ -176,7 +176,7 @@ TEST(SurfaceDriver, FilteredFarCheckerboardLosesItsMoire) {
 
 TEST(SurfaceDriver, BackendsAgreeAndThreadCountsDoNotMatter) {
   for (const std::string& file : testing::gallery_graphs(GraphKind::surface)) {
-    Result<LoadedGraph> loaded = load_and_compile(file, {});
+    Result<LoadedGraph> loaded = testing::load_gallery_graph(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
     Result<Scene> scene = Scene::build(*loaded->graph->render.scene, file, {});
     ASSERT_TRUE(scene.ok()) << scene.error().to_string();

@@ -28,7 +28,7 @@ Image render(const LoadedGraph& loaded, int size, int threads, float frame = 0.0
 class GalleryGraph : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GalleryGraph, ChecksAndRendersANonConstantImage) {
-  Result<LoadedGraph> loaded = load_and_compile(GetParam(), {});
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(GetParam());
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   const Image image = render(*loaded, 96, 0);
   const auto [low, high] = std::minmax_element(image.pixels.begin(), image.pixels.end());
@@ -37,7 +37,7 @@ TEST_P(GalleryGraph, ChecksAndRendersANonConstantImage) {
 }
 
 TEST_P(GalleryGraph, IsBitIdenticalAcrossRunsAndThreadCounts) {
-  Result<LoadedGraph> loaded = load_and_compile(GetParam(), {});
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(GetParam());
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   const Image single = render(*loaded, 80, 1);
   const Image many = render(*loaded, 80, 4);

@@ -13,7 +13,7 @@ namespace {
 TEST(Verify, GalleryIsWellFormedAfterEveryPass) {
   for (const std::string& file : testing::gallery_graphs()) {
     int passes = 0;
-    Result<LoadedGraph> loaded = load_and_compile(file, {}, [&](const char* pass, const ShadeIR& ir) {
+    Result<LoadedGraph> loaded = testing::load_gallery_graph(file, [&](const char* pass, const ShadeIR& ir) {
       EXPECT_EQ(verify_shade_ir(ir), "") << file << " after " << pass;
       ++passes;
     });

@@ -131,4 +131,42 @@ struct table2d {
   }
 };
 
+inline std::vector<std::string> image_wraps() { return {"repeat", "clamp"}; }
+
+// data: the image's RGB pixels, bottom row first (grey images repeat their
+// one channel; alpha is dropped); immediates: width, wrap mode.
+struct image {
+  static OpDef definition() {
+    return {.name = "image", .family = OpFamily::spline,
+            .doc = "an image file sampled at uv, bilinear; (0,0) is its lower-left corner (Perlin 1985: a stored "
+                   "texture is a table lookup composed with a projection)",
+            .inputs = {in("uv", Type::vec2, "image coordinates, [0,1]^2 over the image")},
+            .outputs = {out(Type::color)},
+            .attributes = {{"file", AttributeKind::image_file, true, {},
+                            "the image file (any format OpenImageIO reads, at most 1024x1024 pixels), relative to "
+                            "the graph file"},
+                           {"wrap", AttributeKind::choice, false, image_wraps(),
+                            "outside [0,1]: repeat the image or clamp to its edge pixels"}}};
+  }
+  static void lay_out(const Attributes& attributes, AttributeLayout& layout) {
+    const Image& file = attributes.image_file("file");
+    const auto width = static_cast<std::size_t>(file.width), channels = static_cast<std::size_t>(file.channels);
+    layout.data.reserve(width * static_cast<std::size_t>(file.height) * 3);
+    for (int row = file.height - 1; row >= 0; --row)
+      for (std::size_t column = 0; column < width; ++column)
+        for (std::size_t c = 0; c < 3; ++c)
+          layout.data.push_back(file.pixels[(static_cast<std::size_t>(row) * width + column) * channels +
+                                            (channels >= 3 ? c : 0)]);
+    layout.immediate[0] = file.width;
+    layout.immediate[1] = attributes.choice("wrap", image_wraps());
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    const int width = x.immediate(0);
+    const int height = x.data_count() / (3 * width);
+    frame::store_vec3(x, sem::image(x.data(), width, height, static_cast<sem::ImageWrap>(x.immediate(1)), x.in(0, 0),
+                                    x.in(0, 1)));
+  }
+};
+
 }  // namespace shadetree::ops

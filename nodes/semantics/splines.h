@@ -2,9 +2,11 @@
 // F. Knot data is a flat array: knot k, component c at [k * components + c].
 #pragma once
 
+#include <tuple>
 #include <utility>
 
 #include "nodes/lane_scalar.h"
+#include "nodes/semantics/vec3.h"
 
 namespace shadetree::semantics {
 
@@ -98,6 +100,45 @@ F table2d(const float* values, int rows, int columns, F x, F y) {
   F bottom = v00 + (v01 - v00) * fx;
   F top = v10 + (v11 - v10) * fx;
   return bottom + (top - bottom) * fy;
+}
+
+enum class ImageWrap : int { repeat = 0, clamp = 1 };
+
+// Bilinear lookup of an RGB image of `width` x `height` pixels, bottom row
+// first, at (u, v): pixel (i, j) is centred at ((i + 0.5) / width,
+// (j + 0.5) / height), so (0, 0) is the lower-left corner, as uv and P.xy
+// of a texture. Perlin 1985: "any stored texture algorithm may be cast as
+// a table lookup function composed with a projection function".
+template <class F>
+Vec3<F> image(const float* rgb, int width, int height, ImageWrap wrap, F u, F v) {
+  using I = IntOf<F>;
+  // Each axis: the two pixels to blend and the weight of the second. The
+  // coordinate is first brought into [0, 1] (NaN to 0), so that no input
+  // can index outside the image.
+  auto axis = [wrap](F coordinate, int size) {
+    F t = wrap == ImageWrap::repeat ? unit_clamp(coordinate - floor(coordinate)) : unit_clamp(coordinate);
+    F position = t * float(size) - 0.5f;
+    F cell = floor(position);
+    I first = to_int(cell), second = first + 1;
+    if (wrap == ImageWrap::repeat) {
+      first = select(first < 0, I{} + (size - 1), first);
+      second = select(second >= size, I{}, second);
+    } else {
+      first = max(first, I{});
+      second = min(second, I{} + (size - 1));
+    }
+    return std::tuple{first, second, position - cell};
+  };
+  auto [left, right, fx] = axis(u, width);
+  auto [bottom, top, fy] = axis(v, height);
+  F channels[3];
+  for (int c = 0; c < 3; ++c) {
+    auto texel = [&](I row, I column) { return gather(rgb, (row * width + column) * 3 + c); };
+    F lower = texel(bottom, left) + (texel(bottom, right) - texel(bottom, left)) * fx;
+    F upper = texel(top, left) + (texel(top, right) - texel(top, left)) * fx;
+    channels[c] = lower + (upper - lower) * fy;
+  }
+  return {channels[0], channels[1], channels[2]};
 }
 
 }  // namespace shadetree::semantics

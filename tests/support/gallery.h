@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "graph/parse.h"
+#include "pipeline/compile_graph.h"
+#include "render/graph_images.h"
 
 namespace shadetree::testing {
 
@@ -26,6 +28,12 @@ inline std::vector<std::string> gallery_graphs(GraphKind kind) {
     if (graph && graph->kind == kind) paths.push_back(path);
   }
   return paths;
+}
+
+// A gallery graph compiled as `shadetree render` compiles it (its images
+// read from its folder); `observe` as in load_and_compile.
+inline Result<LoadedGraph> load_gallery_graph(const std::string& path, const PassObserver& observe = {}) {
+  return load_and_compile(path, {}, observe, graph_image_reader());
 }
 
 // Test names from paths: "graphs/marble.json" -> "marble".
