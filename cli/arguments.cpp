@@ -42,6 +42,11 @@ Result<TextureView> texture_view(const Graph& graph, const std::string& size, st
   return view;
 }
 
+Result<std::pair<int, int>> image_size(const Graph& graph, const std::string& size) {
+  if (size.empty()) return std::pair{graph.render.width, graph.render.height};
+  return parse_size(size);
+}
+
 void add_search_path_option(CLI::App& command, std::vector<std::string>& search_paths) {
   command.add_option("--search-path", search_paths,
                      "a folder outside the graph's own from which the graph may read files (repeatable)");

@@ -22,6 +22,9 @@ namespace shadetree {
 // "512x256" -> {512, 256}, within the image size limit.
 Result<std::pair<int, int>> parse_size(const std::string& text);
 
+// --size if given, else the graph's render size.
+Result<std::pair<int, int>> image_size(const Graph& graph, const std::string& size);
+
 // "1,2,3" -> three floats.
 Result<std::vector<float>> parse_floats(const std::string& text, std::size_t count, const std::string& what);
 

@@ -1,6 +1,7 @@
 // shadetree render FILE -o OUT.png|OUT.exr: render a texture graph over its
-// domain, or a surface graph on its scene (or a preview object); one
-// frame, or a numbered sequence with --frames, from one compiled kernel.
+// domain, a surface graph on its scene (or a preview object), or a volume
+// graph through the ray marcher; one frame, or a numbered sequence with
+// --frames, from one compiled kernel.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "graph/parse_volume.h"
 #include "pipeline/compile_graph.h"
 #include "render/graph_images.h"
 #include "pipeline/tiered_kernel.h"
@@ -17,6 +19,7 @@
 #include "render/progress.h"
 #include "render/surface_driver.h"
 #include "render/texture_driver.h"
+#include "render/volume_driver.h"
 
 namespace shadetree {
 
@@ -35,6 +38,8 @@ struct RenderArguments {
   bool no_shadows = false;
   std::string object;
   std::vector<std::string> search_paths;
+  float step = 0.0f;
+  bool jitter = false;
 };
 
 std::string milliseconds_text(double milliseconds) {
@@ -61,6 +66,58 @@ Result<Scene> surface_scene(const Graph& graph, const RenderArguments& arguments
   return Scene::build(*desc, graph.file, search_paths);
 }
 
+// A volume graph's frames, through the ray marcher, on the graph's scene
+// (camera, lights, background) or the default one.
+Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
+                                            const RenderArguments& arguments) {
+  const Graph& graph = *loaded.graph;
+  if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
+    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
+                      "--object, --spp and --no-shadows are for surface graphs; this is a volume graph"};
+  if (!graph.render.volume)
+    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
+                      "a volume graph needs render.volume with \"bounds\" to be rendered (a volume must be bounded)"};
+  const VolumeDesc volume = *graph.render.volume;
+  if (arguments.step != 0.0f)
+    if (std::string problem = step_problem(volume, arguments.step); !problem.empty())
+      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step: " + problem};
+  SceneDesc desc = graph.render.scene.value_or(SceneDesc{});
+  if (!graph.render.scene) desc.lights = default_lights();
+  auto scene = std::make_shared<Result<Scene>>(Scene::build(desc, graph.file, arguments.search_paths));
+  if (!*scene) return (*scene).error();
+  Result<std::pair<int, int>> size = image_size(graph, arguments.size);
+  if (!size) return size.error();
+  VolumeView view;
+  std::tie(view.width, view.height) = *size;
+  auto camera = std::make_shared<Camera>(desc.camera, view.width, view.height);
+  return FrameRenderer([&, scene, camera, view, volume](float frame, std::string* summary) {
+    VolumeView frame_view = view;
+    frame_view.frame = frame;
+    ProgressReporter progress("marching " + arguments.file);
+    VolumeRenderOptions options;
+    options.threads = arguments.threads;
+    options.step = arguments.step;
+    if (arguments.jitter) options.jitter = true;
+    options.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
+    options.progress = [&progress](double fraction) { progress.update(fraction); };
+    VolumeRenderStats stats;
+    const auto start = std::chrono::steady_clock::now();
+    Result<Image> image = render_volume(kernel, loaded.params, **scene, volume, *camera, frame_view, options, &stats);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%dx%d, %ld rays, %ld density samples (%ld for gradients) in %.3f s (thread time: kernel %.3f s "
+                  "= %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
+                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples, seconds,
+                  stats.kernel_seconds,
+                  stats.kernel_seconds > 0 ? static_cast<double>(stats.density_samples) / stats.kernel_seconds / 1e6
+                                           : 0.0,
+                  100.0 * stats.lane_utilisation(), options.lane_width, stats.march_seconds);
+    *summary = text;
+    return image;
+  });
+}
+
 Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
                                      const RenderArguments& arguments) {
   const Graph& graph = *loaded.graph;
@@ -68,6 +125,8 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                         "--object, --spp and --no-shadows are for surface graphs; this is a texture graph"};
+    if (arguments.step != 0.0f || arguments.jitter)
+      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
     Result<TextureView> view = texture_view(graph, arguments.size, arguments.frame);
     if (!view) return view.error();
     return FrameRenderer([&, view = *view](float frame, std::string* summary) {
@@ -88,22 +147,18 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
       return image;
     });
   }
-  if (graph.kind == GraphKind::volume)
-    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                      "render supports texture and surface graphs for now; this is a volume graph"};
+  if (graph.kind == GraphKind::volume) return volume_frame_renderer(loaded, kernel, arguments);
+  if (arguments.step != 0.0f || arguments.jitter)
+    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
   if (!arguments.object.empty() && graph.render.scene)
     std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", arguments.file.c_str(),
                  arguments.object.c_str());
   auto scene = std::make_shared<Result<Scene>>(surface_scene(graph, arguments));
   if (!*scene) return (*scene).error();
+  Result<std::pair<int, int>> size = image_size(graph, arguments.size);
+  if (!size) return size.error();
   SurfaceView view;
-  view.width = graph.render.width;
-  view.height = graph.render.height;
-  if (!arguments.size.empty()) {
-    auto parsed = parse_size(arguments.size);
-    if (!parsed) return parsed.error();
-    std::tie(view.width, view.height) = *parsed;
-  }
+  std::tie(view.width, view.height) = *size;
   view.samples_per_pixel = arguments.samples_per_pixel;
   auto camera = std::make_shared<Camera>((**scene).desc().camera, view.width, view.height);
   return FrameRenderer([&, scene, camera, view](float frame, std::string* summary) {
@@ -219,7 +274,7 @@ ExitStatus render(const RenderArguments& arguments) {
 }  // namespace
 
 void add_render_command(CLI::App& app, CommandRunner& run) {
-  auto* command = app.add_subcommand("render", "render a texture or surface graph to a PNG or EXR image");
+  auto* command = app.add_subcommand("render", "render a texture, surface or volume graph to a PNG or EXR image");
   auto arguments = std::make_shared<RenderArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
   command->add_option("-o,--output", arguments->output,
@@ -246,6 +301,11 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
                       "surface graphs: render on a preview object: sphere, torus, plane, box or a mesh file "
                       "(.obj, .ply) instead of the graph's scene");
   add_search_path_option(*command, arguments->search_paths);
+  command->add_option("--step", arguments->step,
+                      "volume graphs: the march step in the units of P (default: render.volume.step, else the "
+                      "bounds' diagonal / 256)");
+  command->add_flag("--jitter", arguments->jitter,
+                    "volume graphs: start each ray at a random fraction of a step (noise instead of banding)");
   command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
 }
 

@@ -73,6 +73,7 @@ struct RenderSettings {
   float z = 0.0f;                      // P.z of the image plane
   float frame = 0.0f;
   std::optional<SceneDesc> scene;      // surface and volume graphs
+  std::optional<VolumeDesc> volume;    // volume graphs
 };
 
 struct Graph {

@@ -12,6 +12,7 @@
 
 #include "graph/json_reader.h"
 #include "graph/parse_scene.h"
+#include "graph/parse_volume.h"
 
 namespace shadetree {
 namespace {
@@ -268,7 +269,7 @@ class Parser : JsonReader {
 
   RenderSettings parse_render(const json& render, GraphKind kind) const {
     if (!render.is_object()) fail({}, {}, "field \"render\" must be an object");
-    check_fields(render, {"size", "domain", "z", "frame", "scene"}, {}, "render");
+    check_fields(render, {"size", "domain", "z", "frame", "scene", "volume"}, {}, "render");
     RenderSettings settings;
     if (render.contains("size")) {
       const json& size = render["size"];
@@ -300,7 +301,11 @@ class Parser : JsonReader {
     if (render.contains("frame")) settings.frame = number(render["frame"], {}, "render frame");
     if (render.contains("scene")) {
       if (kind == GraphKind::texture) fail({}, {}, "render scene is for surface and volume graphs, not textures");
-      settings.scene = parse_scene(*this, render["scene"]);
+      settings.scene = parse_scene(*this, render["scene"], kind);
+    }
+    if (render.contains("volume")) {
+      if (kind != GraphKind::volume) fail({}, {}, "render volume is for volume graphs");
+      settings.volume = parse_volume(*this, render["volume"]);
     }
     return settings;
   }

@@ -10,7 +10,7 @@ namespace {
 
 class SceneParser {
  public:
-  explicit SceneParser(const JsonReader& reader) : reader_(reader) {}
+  SceneParser(const JsonReader& reader, GraphKind kind) : reader_(reader), kind_(kind) {}
 
   SceneDesc parse(const json& scene) const {
     if (!scene.is_object()) fail("render scene must be an object");
@@ -18,13 +18,19 @@ class SceneParser {
                          "render scene");
     SceneDesc result;
     if (scene.contains("camera")) result.camera = camera(scene["camera"]);
-    if (!scene.contains("objects")) fail("render scene has no \"objects\"");
-    const json& objects = scene["objects"];
-    if (!objects.is_array() || objects.empty()) fail("scene objects must be a non-empty array");
-    if (objects.size() > max_scene_objects)
-      fail("scene has more than " + std::to_string(max_scene_objects) + " objects");
-    for (std::size_t index = 0; index < objects.size(); ++index)
-      result.objects.push_back(object(objects[index], index));
+    if (kind_ == GraphKind::volume) {
+      if (scene.contains("objects"))
+        fail("a volume graph's scene holds no objects (the volume is render.volume; objects in volumes are not "
+             "supported yet)");
+    } else {
+      if (!scene.contains("objects")) fail("render scene has no \"objects\"");
+      const json& objects = scene["objects"];
+      if (!objects.is_array() || objects.empty()) fail("scene objects must be a non-empty array");
+      if (objects.size() > max_scene_objects)
+        fail("scene has more than " + std::to_string(max_scene_objects) + " objects");
+      for (std::size_t index = 0; index < objects.size(); ++index)
+        result.objects.push_back(object(objects[index], index));
+    }
     if (scene.contains("lights")) {
       const json& lights = scene["lights"];
       if (!lights.is_array()) fail("scene lights must be an array");
@@ -214,10 +220,13 @@ class SceneParser {
   }
 
   const JsonReader& reader_;
+  GraphKind kind_;
 };
 
 }  // namespace
 
-SceneDesc parse_scene(const JsonReader& reader, const json& scene) { return SceneParser(reader).parse(scene); }
+SceneDesc parse_scene(const JsonReader& reader, const json& scene, GraphKind kind) {
+  return SceneParser(reader, kind).parse(scene);
+}
 
 }  // namespace shadetree

@@ -63,6 +63,22 @@ struct SceneDesc {
   bool shadows = true;
 };
 
+// The volume of a volume graph's render section: where the ray marcher
+// samples the density (Perlin & Hoffert 1989 section 3.1: each ray is
+// clipped to a box bounding the hypertexture, then marched at a fixed
+// step). The box is in world space, which is the space of P.
+struct VolumeDesc {
+  std::array<float, 3> bounds_min{0.0f, 0.0f, 0.0f};  // required; min < max on every axis
+  std::array<float, 3> bounds_max{0.0f, 0.0f, 0.0f};
+  float step = 0.0f;            // in the units of P; 0: the bounds' diagonal / default_steps_across
+  float reference_step = 0.0f;  // the step at which opacity is the graph's; 0: the same as step
+  bool jitter = false;          // start each ray at a random fraction of a step (noise for banding)
+};
+
+inline constexpr float default_steps_across = 256.0f;
+// Samples along one ray through the whole box (diagonal / step), at most.
+inline constexpr float max_steps_across = 65536.0f;
+
 // What a scene without "lights" is lit by.
 std::vector<LightDesc> default_lights();
 

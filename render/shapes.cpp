@@ -110,25 +110,13 @@ std::optional<SurfaceHit> intersect_plane(const Ray& ray, float t_min, float t_m
   return hit;
 }
 
-// Slabs (Kay and Kajiya 1986): the entry is the last of the near planes.
+// The entry is the last of the near planes, the exit the first far one.
 std::optional<SurfaceHit> intersect_box(const Box& box, const Ray& ray, float t_min, float t_max) {
-  float near = -INFINITY, far = INFINITY;
-  int near_axis = 0, far_axis = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const float o = ray.origin[axis], d = ray.direction[axis], h = box.half_size[axis];
-    if (d == 0.0f) {
-      if (o < -h || o > h) return std::nullopt;
-      continue;
-    }
-    float t0 = (-h - o) / d, t1 = (h - o) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    if (t0 > near) near = t0, near_axis = axis;
-    if (t1 < far) far = t1, far_axis = axis;
-  }
-  if (near > far) return std::nullopt;
-  float t = near;
-  int axis = near_axis;
-  if (t < t_min) t = far, axis = far_axis;
+  const std::optional<Span> span = clip_to_box(ray, -box.half_size, box.half_size);
+  if (!span) return std::nullopt;
+  float t = span->near;
+  int axis = span->near_axis;
+  if (t < t_min) t = span->far, axis = span->far_axis;
   if (t < t_min || t > t_max) return std::nullopt;
   SurfaceHit hit;
   hit.t = t;
@@ -141,6 +129,23 @@ std::optional<SurfaceHit> intersect_box(const Box& box, const Ray& ray, float t_
 }
 
 }  // namespace
+
+std::optional<Span> clip_to_box(const Ray& ray, const glm::vec3& lo, const glm::vec3& hi) {
+  Span span{-INFINITY, INFINITY, 0, 0};
+  for (int axis = 0; axis < 3; ++axis) {
+    const float o = ray.origin[axis], d = ray.direction[axis];
+    if (d == 0.0f) {
+      if (o < lo[axis] || o > hi[axis]) return std::nullopt;
+      continue;
+    }
+    float t0 = (lo[axis] - o) / d, t1 = (hi[axis] - o) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > span.near) span.near = t0, span.near_axis = axis;
+    if (t1 < span.far) span.far = t1, span.far_axis = axis;
+  }
+  if (span.near > span.far) return std::nullopt;
+  return span;
+}
 
 // Segments per span of the profile: a frustum's radius differs from the
 // spline's by under 0.1% of a span's length at 24.

@@ -70,6 +70,16 @@ struct MeshShape {
 
 using Shape = std::variant<Sphere, Torus, Plane, Box, Revolution, MeshShape>;
 
+// Where a ray is inside the axis-aligned box [lo, hi] (Kay and Kajiya
+// 1986 slabs): t from `near` to `far`, entering through a face normal to
+// `near_axis` and leaving through one normal to `far_axis`. Nothing if the
+// ray's line misses the box.
+struct Span {
+  float near = 0.0f, far = 0.0f;
+  int near_axis = 0, far_axis = 0;
+};
+std::optional<Span> clip_to_box(const Ray& ray, const glm::vec3& lo, const glm::vec3& hi);
+
 // The nearest hit with t in [t_min, t_max], if any.
 std::optional<SurfaceHit> intersect(const Shape& shape, const Ray& ray, float t_min, float t_max);
 

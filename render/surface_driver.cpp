@@ -7,11 +7,11 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
-#include <tbb/blocked_range2d.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "render/lighting.h"
+#include "render/pixel_hash.h"
+#include "render/stage_clock.h"
+#include "render/image_tiles.h"
 #include "render/thread_bindings.h"
 
 namespace shadetree {
@@ -22,28 +22,13 @@ namespace {
 constexpr int tile_size = 32;
 constexpr float max_filter_width = 1e6f;  // at grazing angles the footprint is unbounded
 
-// A 32-bit integer hash (Wellons' lowbias32): jitter that depends only on
-// the pixel and the sample, so images do not depend on the thread count.
-std::uint32_t hash(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
-
-float unit_float(std::uint32_t bits) { return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f); }
-
 // Where in pixel (column, row) sample `index` of `count` lies, in [0, 1)^2:
 // the centre for one sample, else jittered, stratified on a grid where
 // `count` is a square.
 glm::vec2 sample_offset(int column, int row, int index, int count) {
   if (count == 1) return {0.5f, 0.5f};
-  const std::uint32_t seed = hash(static_cast<std::uint32_t>(column) * 73856093u ^
-                                  static_cast<std::uint32_t>(row) * 19349663u ^
-                                  static_cast<std::uint32_t>(index) * 83492791u);
-  const glm::vec2 jitter(unit_float(seed), unit_float(hash(seed)));
+  const std::uint32_t seed = pixel_hash(column, row, index);
+  const glm::vec2 jitter(unit_float(seed), unit_float(hash32(seed)));
   const int grid = static_cast<int>(std::sqrt(static_cast<float>(count)));
   if (grid * grid != count) return jitter;
   return (glm::vec2(static_cast<float>(index % grid), static_cast<float>(index / grid)) + jitter) /
@@ -86,18 +71,6 @@ void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3&
   for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = value[c];
 }
 
-class StageClock {
- public:
-  explicit StageClock(std::atomic<long long>& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-  ~StageClock() {
-    total_ += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::atomic<long long>& total_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 }  // namespace
 
 UniformInputs surface_uniforms(const Scene& scene, float frame) {
@@ -127,17 +100,12 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
   image.channels = 3;
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
 
-  const int tiles_x = (view.width + tile_size - 1) / tile_size;
-  const int tiles_y = (view.height + tile_size - 1) / tile_size;
-  const int tile_count = tiles_x * tiles_y;
-  std::atomic<int> tiles_done{0};
   std::atomic<long long> visibility_ns{0}, shading_ns{0}, lighting_ns{0};
   std::atomic<long> visible_total{0};
   ThreadBindings bindings(kernel, params.data(), surface_uniforms(scene, view.frame));
 
-  auto render_tile = [&](int tile_x, int tile_y) {
-    const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
-    const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
+  auto render_tile = [&](const Tile& tile) {
+    const int x0 = tile.x0, y0 = tile.y0, w = tile.width, h = tile.height;
     std::vector<glm::vec3> sums(static_cast<std::size_t>(w) * h, glm::vec3(0.0f));
     std::vector<VisibleSample> visible;
     {
@@ -235,22 +203,12 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
         const glm::vec3 value = sums[static_cast<std::size_t>(y) * w + x] * weight;
         for (int c = 0; c < 3; ++c) pixel[c] = value[c];
       }
-    const int done = ++tiles_done;
-    if (options.progress) options.progress(static_cast<double>(done) / tile_count);
   };
-
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
-                      [&](const tbb::blocked_range2d<int>& range) {
-                        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
-                          for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) render_tile(tx, ty);
-                      });
-  });
+  for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
   if (stats) {
-    stats->visibility_seconds = static_cast<double>(visibility_ns.load()) * 1e-9;
-    stats->shading_seconds = static_cast<double>(shading_ns.load()) * 1e-9;
-    stats->lighting_seconds = static_cast<double>(lighting_ns.load()) * 1e-9;
+    stats->visibility_seconds = seconds(visibility_ns);
+    stats->shading_seconds = seconds(shading_ns);
+    stats->lighting_seconds = seconds(lighting_ns);
     stats->visible_samples = visible_total.load();
     stats->samples = static_cast<long>(view.width) * view.height * samples_per_pixel;
   }

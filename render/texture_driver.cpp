@@ -6,14 +6,10 @@
 #include "render/texture_driver.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
-#include <tbb/blocked_range2d.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
+#include "render/image_tiles.h"
 #include "render/thread_bindings.h"
 
 namespace shadetree {
@@ -85,15 +81,10 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
   image.channels = alpha ? 4 : 3;
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * image.channels, 0.0f);
 
-  const int tiles_x = (view.width + tile_size - 1) / tile_size;
-  const int tiles_y = (view.height + tile_size - 1) / tile_size;
-  std::atomic<int> tiles_done{0};
-  const int tile_count = tiles_x * tiles_y;
   ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
 
-  auto render_tile = [&](int tile_x, int tile_y) {
-    const int x0 = tile_x * tile_size, y0 = tile_y * tile_size;
-    const int w = std::min(tile_size, view.width - x0), h = std::min(tile_size, view.height - y0);
+  auto render_tile = [&](const Tile& tile) {
+    const int x0 = tile.x0, y0 = tile.y0, w = tile.width, h = tile.height;
     const std::size_t count = static_cast<std::size_t>(w) * h;
     SampleBuffers input(count, kernel.reads());
     for (int y = 0; y < h; ++y)
@@ -111,18 +102,8 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
         if (alpha) pixel[3] = outputs.plane(layout.plane(OutputId::alpha))[i];
       }
     }
-    const int done = ++tiles_done;
-    if (options.progress) options.progress(static_cast<double>(done) / tile_count);
   };
-
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
-                      [&](const tbb::blocked_range2d<int>& range) {
-                        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
-                          for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) render_tile(tx, ty);
-                      });
-  });
+  for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
   return image;
 }
 

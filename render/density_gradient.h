@@ -1,0 +1,31 @@
+// The density gradient of a march sample (Perlin & Hoffert 1989 section
+// 3.1): from the previous sample along the ray and two probes off it,
+//   [f(x) - f(x - dx_mu), f(x + dx_v) - f(x), f(x + dx_w) - f(x)]
+// in the ray's (mu, v, w) frame, carried back to (x, y, z). It costs two
+// evaluations, not three, because the sample before is already known.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace shadetree {
+
+// The ray's unit direction and two unit vectors perpendicular to it and
+// to each other.
+struct RayFrame {
+  glm::vec3 along{0.0f, 0.0f, -1.0f}, across_v{1.0f, 0.0f, 0.0f}, across_w{0.0f, 1.0f, 0.0f};
+};
+
+RayFrame ray_frame(const glm::vec3& unit_direction);
+
+// The densities at the sample (`here`), at the previous sample `back`
+// along the ray, and at the probes `probe` off it along across_v and
+// across_w.
+struct GradientSamples {
+  float here = 0.0f;
+  float previous = 0.0f, back = 1.0f;
+  float toward_v = 0.0f, toward_w = 0.0f, probe = 1.0f;
+};
+
+glm::vec3 density_gradient(const RayFrame& frame, const GradientSamples& samples);
+
+}  // namespace shadetree

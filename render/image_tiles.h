@@ -1,0 +1,21 @@
+// The drivers' parallel loop: an image cut into square tiles, rendered on
+// oneTBB's threads. Each tile is independent, so images are the same for
+// any thread count.
+#pragma once
+
+#include <functional>
+
+namespace shadetree {
+
+struct Tile {
+  int x0 = 0, y0 = 0;         // top-left pixel
+  int width = 0, height = 0;  // at most the tile size (less on the right and bottom edges)
+};
+
+// render(tile) for every tile of `tile_size` pixels square of a `width` x
+// `height` image, on `threads` threads (0: all cores); progress(fraction
+// of tiles done), if set, after each.
+void for_each_tile(int width, int height, int tile_size, int threads, const std::function<void(const Tile&)>& render,
+                   const std::function<void(double)>& progress);
+
+}  // namespace shadetree

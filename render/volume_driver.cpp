@@ -1,0 +1,303 @@
+#include "render/volume_driver.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "graph/parse_volume.h"
+#include "render/density_gradient.h"
+#include "render/image_tiles.h"
+#include "render/lighting.h"
+#include "render/pixel_hash.h"
+#include "render/stage_clock.h"
+#include "render/thread_bindings.h"
+
+namespace shadetree {
+namespace {
+
+constexpr int tile_size = 32;
+
+// One ray through the volume. Segment k covers t in [entry + k step,
+// min(entry + (k + 1) step, exit)]; its sample lies `jitter` of the way
+// along it (the middle without jitter). Each segment composites with its
+// own length, so a constant density gives exactly the transmittance of
+// the box's thickness whatever the step (1989: opacity is "a function of
+// both density and step-size").
+struct MarchingRay {
+  int pixel = 0;  // in the tile
+  glm::vec3 origin{0.0f};
+  RayFrame frame;  // its unit direction and two perpendiculars
+  float entry = 0.0f, exit = 0.0f;
+  float step_length = 0.0f;
+  float jitter = 0.5f;
+  int segment = 0;  // the next one; -1: the probe before the entry, for the first gradient
+  float previous_t = 0.0f, previous_density = 0.0f;
+  glm::vec3 color{0.0f};
+  float alpha = 0.0f;
+
+  float segment_start() const { return entry + static_cast<float>(segment) * step_length; }
+  float segment_length() const { return std::min(step_length, exit - segment_start()); }
+  float sample_t() const {
+    return segment < 0 ? entry - (1.0f - jitter) * step_length : segment_start() + jitter * segment_length();
+  }
+  glm::vec3 at(float t) const { return origin + t * frame.along; }
+};
+
+void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3& value) {
+  if (!buffers.has(id)) return;
+  for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = value[c];
+}
+
+// The planes of one batch of samples and their outputs, with the planes
+// that are the same for every sample filled once.
+struct Batch {
+  Batch(std::size_t capacity, const Kernel& kernel, float step)
+      : inputs(capacity, kernel.reads()), outputs(capacity, kernel.outputs()) {
+    if (inputs.has(GlobalId::filter_width)) std::fill_n(inputs.plane(GlobalId::filter_width), capacity, step);
+  }
+  SampleBuffers inputs;
+  OutputBuffers outputs;
+};
+
+// Statistics of one thread's tiles, added to the totals once per tile.
+struct TileCounts {
+  long rays = 0, density_samples = 0, gradient_samples = 0, kernel_calls = 0, lane_slots = 0;
+};
+
+class Marcher {
+ public:
+  Marcher(const Kernel& kernel, const Scene& scene, const VolumeDesc& volume, float step, float reference_step,
+          bool jitter, const VolumeRenderOptions& options)
+      : kernel_(kernel),
+        layout_(kernel.outputs()),
+        scene_(scene),
+        lo_(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]),
+        hi_(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]),
+        step_(step),
+        reference_step_(reference_step),
+        jitter_(jitter),
+        lit_(scene.desc().lighting == Lighting::lit),
+        options_(options),
+        background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
+
+  // The tile's pixels, RGB, row after row.
+  void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, std::vector<glm::vec3>& pixels,
+                   TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+    pixels.assign(static_cast<std::size_t>(tile.width) * tile.height, background_);
+    std::vector<MarchingRay> rays;
+    for (int y = 0; y < tile.height; ++y)
+      for (int x = 0; x < tile.width; ++x) {
+        const int column = tile.x0 + x, row = tile.y0 + y;
+        const Ray ray = camera.ray(static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+        const std::optional<Span> span = clip_to_box(ray, lo_, hi_);
+        if (!span || span->far <= 0.0f) continue;
+        MarchingRay& marching = rays.emplace_back();
+        marching.pixel = y * tile.width + x;
+        marching.origin = ray.origin;
+        marching.frame = ray_frame(ray.direction);
+        marching.entry = std::max(span->near, 0.0f);
+        marching.exit = span->far;
+        marching.step_length = step_;
+        if (jitter_) marching.jitter = unit_float(pixel_hash(column, row, 0));
+        marching.segment = lit_ ? -1 : 0;
+      }
+    counts.rays += static_cast<long>(rays.size());
+    const std::size_t packet = options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : rays.size();
+    if (rays.empty()) return;
+    Batch samples(std::min(packet, rays.size()), kernel_, step_);
+    Batch probes(2 * std::min(packet, rays.size()), kernel_, step_);
+    for (std::size_t first = 0; first < rays.size(); first += packet) {
+      const std::size_t last = std::min(rays.size(), first + packet);
+      std::vector<MarchingRay*> live;
+      for (std::size_t i = first; i < last; ++i) live.push_back(&rays[i]);
+      while (!live.empty()) march_once(live, samples, probes, bound, counts, kernel_ns);
+      for (std::size_t i = first; i < last; ++i)
+        pixels[static_cast<std::size_t>(rays[i].pixel)] = rays[i].color + (1.0f - rays[i].alpha) * background_;
+    }
+  }
+
+ private:
+  void run(BoundKernel& bound, Batch& batch, std::size_t count, TileCounts& counts,
+           std::atomic<long long>& kernel_ns) const {
+    StageClock clock(kernel_ns);
+    bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
+    counts.density_samples += static_cast<long>(count);
+    counts.kernel_calls += 1;
+    if (options_.lane_width > 0) {
+      const std::size_t width = static_cast<std::size_t>(options_.lane_width);
+      counts.lane_slots += static_cast<long>((count + width - 1) / width * width);
+    }
+  }
+
+  float output(const Batch& batch, OutputId id, std::size_t i) const {
+    return batch.outputs.plane(layout_.plane(id))[i];
+  }
+
+  // Every live ray takes its next sample; rays that leave the volume or
+  // become opaque are dropped.
+  void march_once(std::vector<MarchingRay*>& live, Batch& samples, Batch& probes, BoundKernel& bound,
+                  TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+    const std::size_t count = live.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const MarchingRay& ray = *live[i];
+      store3(samples.inputs, GlobalId::P, i, ray.at(ray.sample_t()));
+      store3(samples.inputs, GlobalId::I, i, ray.frame.along);
+    }
+    run(bound, samples, count, counts, kernel_ns);
+
+    // 1989 section 3.1: where 0 < density < 1, the gradient from the
+    // previous sample along the ray and two probes off it
+    // (render/density_gradient.h).
+    std::vector<std::size_t> soft;
+    if (lit_) {
+      for (std::size_t i = 0; i < count; ++i) {
+        const float density = output(samples, OutputId::density, i);
+        if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f) soft.push_back(i);
+      }
+      for (std::size_t k = 0; k < soft.size(); ++k) {
+        const MarchingRay& ray = *live[soft[k]];
+        const glm::vec3 x = ray.at(ray.sample_t());
+        store3(probes.inputs, GlobalId::P, 2 * k, x + step_ * ray.frame.across_v);
+        store3(probes.inputs, GlobalId::P, 2 * k + 1, x + step_ * ray.frame.across_w);
+        store3(probes.inputs, GlobalId::I, 2 * k, ray.frame.along);
+        store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
+      }
+      if (!soft.empty()) {
+        run(bound, probes, 2 * soft.size(), counts, kernel_ns);
+        counts.gradient_samples += static_cast<long>(2 * soft.size());
+      }
+    }
+
+    std::size_t next_soft = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      MarchingRay& ray = *live[i];
+      const float t = ray.sample_t();
+      const float density = output(samples, OutputId::density, i);
+      const bool probed = next_soft < soft.size() && soft[next_soft] == i;
+      if (probed) ++next_soft;
+      const float opacity = std::clamp(
+          layout_.provides(OutputId::opacity) ? output(samples, OutputId::opacity, i) : density, 0.0f, 1.0f);
+      // Empty space (most samples) adds nothing: no shading, no pow.
+      if (ray.segment >= 0 && opacity > 0.0f) {
+        glm::vec3 color(1.0f);
+        if (layout_.provides(OutputId::color))
+          for (int c = 0; c < 3; ++c) color[c] = samples.outputs.plane(layout_.plane(OutputId::color, c))[i];
+        if (lit_) {
+          // Density rises inward: the outward normal is -gradient.
+          glm::vec3 normal = -ray.frame.along;
+          if (probed) {
+            const std::size_t k = next_soft - 1;
+            const glm::vec3 gradient = density_gradient(
+                ray.frame, GradientSamples{density, ray.previous_density, std::max(t - ray.previous_t, 1e-30f),
+                                           output(probes, OutputId::density, 2 * k),
+                                           output(probes, OutputId::density, 2 * k + 1), step_});
+            const float length = glm::length(gradient);
+            if (length > 0.0f && std::isfinite(length)) normal = -gradient / length;
+          }
+          SurfaceMaterial material;
+          material.color = color;
+          LitPoint point;
+          point.point = ray.at(t);
+          point.shading_normal = normal;
+          point.geometric_normal = normal;
+          point.to_viewer = -ray.frame.along;
+          color = light_point(scene_, material, point, false);
+        }
+        // alpha_k = 1 - (1 - opacity)^(length / reference step), then
+        // front to back: t = alpha_k (1 - alpha); color += t color_k.
+        const float alpha = opacity >= 1.0f ? 1.0f
+                                            : 1.0f - std::pow(1.0f - opacity, ray.segment_length() / reference_step_);
+        if (std::isfinite(color.x + color.y + color.z)) {
+          const float weight = alpha * (1.0f - ray.alpha);
+          ray.color += weight * color;
+          ray.alpha += weight;
+        }
+      }
+      ray.previous_t = t;
+      ray.previous_density = density;
+      ++ray.segment;
+    }
+    live.erase(std::remove_if(live.begin(), live.end(),
+                              [&](const MarchingRay* ray) {
+                                return ray->segment_start() >= ray->exit || ray->alpha >= 1.0f - options_.termination;
+                              }),
+               live.end());
+  }
+
+  const Kernel& kernel_;
+  const OutputLayout& layout_;
+  const Scene& scene_;
+  glm::vec3 lo_, hi_;
+  float step_, reference_step_;
+  bool jitter_, lit_;
+  const VolumeRenderOptions& options_;
+  glm::vec3 background_;
+};
+
+}  // namespace
+
+UniformInputs volume_uniforms(float frame, float step) {
+  UniformInputs uniforms;
+  uniforms.set(GlobalId::time, frame / frames_per_second);
+  uniforms.set(GlobalId::frame, frame);
+  uniforms.set(GlobalId::step_size, step);
+  return uniforms;
+}
+
+Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
+                            const VolumeDesc& volume, const Camera& camera, const VolumeView& view,
+                            const VolumeRenderOptions& options, VolumeRenderStats* stats) {
+  const OutputLayout& layout = kernel.outputs();
+  if (layout.kind != GraphKind::volume || !layout.provides(OutputId::density))
+    return invalid_input("the ray marcher needs a volume graph with an output \"density\"");
+  const float step = options.step > 0.0f ? options.step : march_step(volume);
+  if (std::string problem = step_problem(volume, step); !problem.empty()) return invalid_input(problem);
+  const bool jitter = options.jitter.value_or(volume.jitter);
+  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), jitter, options);
+
+  Image image;
+  image.width = view.width;
+  image.height = view.height;
+  image.channels = 3;
+  image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
+  ThreadBindings bindings(kernel, params.data(), volume_uniforms(view.frame, step));
+  std::atomic<long long> tile_ns{0}, kernel_ns{0};
+  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, kernel_calls{0}, lane_slots{0};
+
+  for_each_tile(
+      view.width, view.height, tile_size, options.threads,
+      [&](const Tile& tile) {
+        StageClock clock(tile_ns);
+        std::vector<glm::vec3> pixels;
+        TileCounts counts;
+        marcher.render_tile(tile, camera, bindings.local(), pixels, counts, kernel_ns);
+        for (int y = 0; y < tile.height; ++y)
+          for (int x = 0; x < tile.width; ++x) {
+            float* pixel =
+                image.pixels.data() + (static_cast<std::size_t>(tile.y0 + y) * view.width + (tile.x0 + x)) * 3;
+            const glm::vec3& value = pixels[static_cast<std::size_t>(y) * tile.width + x];
+            for (int c = 0; c < 3; ++c) pixel[c] = value[c];
+          }
+        rays += counts.rays;
+        density_samples += counts.density_samples;
+        gradient_samples += counts.gradient_samples;
+        kernel_calls += counts.kernel_calls;
+        lane_slots += counts.lane_slots;
+      },
+      options.progress);
+
+  if (stats) {
+    stats->kernel_seconds = seconds(kernel_ns);
+    stats->march_seconds = seconds(tile_ns) - stats->kernel_seconds;
+    stats->rays = rays;
+    stats->density_samples = density_samples;
+    stats->gradient_samples = gradient_samples;
+    stats->kernel_calls = kernel_calls;
+    stats->lane_slots = lane_slots;
+  }
+  return image;
+}
+
+}  // namespace shadetree

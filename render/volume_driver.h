@@ -1,0 +1,73 @@
+// The hypertexture ray marcher (Perlin & Hoffert 1989 section 3.1): each
+// pixel's ray is clipped to the volume's bounding box and marched at a
+// fixed step; the volume graph gives density, colour and opacity at each
+// sample; where the density is soft (0 < density < 1) its gradient,
+// estimated by finite differences, is the normal that the scene's lights
+// shade; samples are composited front to back until the ray is opaque.
+//
+// Rays are marched in packets: every live ray of a tile takes its next
+// sample together, in one kernel call over densely packed input planes,
+// then the rays that ended are dropped from the packet, so the lanes stay
+// full as rays terminate. Each ray's arithmetic depends only on the ray,
+// so the image is the same for any packet size and thread count.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "graph/scene.h"
+#include "ir/kernel.h"
+#include "nodes/image.h"
+#include "render/camera.h"
+#include "render/scene.h"
+
+namespace shadetree {
+
+struct VolumeView {
+  int width = 512;
+  int height = 512;
+  float frame = 0.0f;
+};
+
+// A ray stops once its opacity passes 1 - this: what it could still add to
+// the pixel is below half an 8-bit step.
+inline constexpr float default_termination = 1.0f / 512.0f;
+
+struct VolumeRenderOptions {
+  int threads = 0;             // 0: all cores
+  float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step)
+  std::optional<bool> jitter;  // unset: the volume's
+  float termination = default_termination;
+  int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
+  int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
+  std::function<void(double fraction_done)> progress;  // may be empty
+};
+
+// Where the time went (seconds of one core, summed over threads) and how
+// full the kernel calls were.
+struct VolumeRenderStats {
+  double march_seconds = 0;   // rays, packing, gradients, shading, compositing
+  double kernel_seconds = 0;  // the graph
+  long rays = 0;              // that met the volume
+  long density_samples = 0;   // graph evaluations: march samples and gradient probes
+  long gradient_samples = 0;  // of those, the probes
+  long kernel_calls = 0;
+  long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)
+
+  double lane_utilisation() const {
+    return lane_slots > 0 ? static_cast<double>(density_samples) / static_cast<double>(lane_slots) : 0.0;
+  }
+};
+
+// The uniform globals of a frame: time, frame and the march step.
+UniformInputs volume_uniforms(float frame, float step);
+
+// A volume graph's density (and colour and opacity, where it has them)
+// over `volume`, lit by the scene's lights unless it says "lighting":
+// "none", over the scene's background. RGB.
+Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
+                            const VolumeDesc& volume, const Camera& camera, const VolumeView& view,
+                            const VolumeRenderOptions& options, VolumeRenderStats* stats = nullptr);
+
+}  // namespace shadetree
