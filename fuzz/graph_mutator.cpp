@@ -29,6 +29,13 @@ std::size_t pick(Random& random, std::size_t count) {
   return std::uniform_int_distribution<std::size_t>(0, count - 1)(random);
 }
 
+// The node's "in" object, made if absent; null if the node has some other
+// "in" (a string, a number: the checker's to refuse, not ours to edit).
+json* inputs_of(json& node) {
+  if (!node.contains("in")) node["in"] = json::object();
+  return node["in"].is_object() ? &node["in"] : nullptr;
+}
+
 template <class Random>
 bool mutate_graph(json& graph, Random& random) {
   if (!graph.is_object() || !graph.contains("nodes") || !graph["nodes"].is_array() || graph["nodes"].empty())
@@ -44,15 +51,17 @@ bool mutate_graph(json& graph, Random& random) {
     case 1: {  // an input wired to another node (perhaps a later one: a cycle)
       const OpDef* op = node.contains("op") && node["op"].is_string() ? find_op(node["op"].get<std::string>()) : nullptr;
       if (!op || op->inputs.empty()) return false;
-      const json& source = nodes[pick(random, nodes.size())];
-      if (!source.is_object() || !source.contains("id")) return false;
-      node["in"][op->inputs[pick(random, op->inputs.size())].name] = source["id"];
+      const json source = nodes[pick(random, nodes.size())];
+      json* inputs = inputs_of(node);
+      if (!inputs || !source.is_object() || !source.contains("id")) return false;
+      (*inputs)[op->inputs[pick(random, op->inputs.size())].name] = source["id"];
       return true;
     }
     case 2: {  // a boundary number in an input
       const OpDef* op = node.contains("op") && node["op"].is_string() ? find_op(node["op"].get<std::string>()) : nullptr;
-      if (!op || op->inputs.empty()) return false;
-      node["in"][op->inputs[pick(random, op->inputs.size())].name] =
+      json* inputs = inputs_of(node);
+      if (!op || op->inputs.empty() || !inputs) return false;
+      (*inputs)[op->inputs[pick(random, op->inputs.size())].name] =
           boundary_numbers[pick(random, std::size(boundary_numbers))];
       return true;
     }
