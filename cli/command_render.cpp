@@ -38,7 +38,7 @@ struct RenderArguments {
   bool no_shadows = false;
   std::string object;
   std::vector<std::string> search_paths;
-  float step = 0.0f;
+  std::optional<float> step;
   bool jitter = false;
 };
 
@@ -78,8 +78,8 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
     return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                       "a volume graph needs render.volume with \"bounds\" to be rendered (a volume must be bounded)"};
   const VolumeDesc volume = *graph.render.volume;
-  if (arguments.step != 0.0f)
-    if (std::string problem = step_problem(volume, arguments.step); !problem.empty())
+  if (arguments.step)
+    if (std::string problem = step_problem(volume, *arguments.step); !problem.empty())
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step: " + problem};
   SceneDesc desc = graph.render.scene.value_or(SceneDesc{});
   if (!graph.render.scene) desc.lights = default_lights();
@@ -96,7 +96,7 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
     ProgressReporter progress("marching " + arguments.file);
     VolumeRenderOptions options;
     options.threads = arguments.threads;
-    options.step = arguments.step;
+    options.step = arguments.step.value_or(0.0f);
     if (arguments.jitter) options.jitter = true;
     options.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
     options.progress = [&progress](double fraction) { progress.update(fraction); };
@@ -125,7 +125,7 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                         "--object, --spp and --no-shadows are for surface graphs; this is a texture graph"};
-    if (arguments.step != 0.0f || arguments.jitter)
+    if (arguments.step || arguments.jitter)
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
     Result<TextureView> view = texture_view(graph, arguments.size, arguments.frame);
     if (!view) return view.error();
@@ -148,7 +148,7 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     });
   }
   if (graph.kind == GraphKind::volume) return volume_frame_renderer(loaded, kernel, arguments);
-  if (arguments.step != 0.0f || arguments.jitter)
+  if (arguments.step || arguments.jitter)
     return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
   if (!arguments.object.empty() && graph.render.scene)
     std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", arguments.file.c_str(),

@@ -57,7 +57,7 @@ float march_step(const VolumeDesc& volume) {
 }
 
 float reference_step(const VolumeDesc& volume) {
-  return volume.reference_step > 0.0f ? volume.reference_step : march_step(volume);
+  return volume.reference_step > 0.0f ? volume.reference_step : diagonal(volume) / default_steps_across;
 }
 
 std::string step_problem(const VolumeDesc& volume, float step) {

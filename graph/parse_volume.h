@@ -10,7 +10,8 @@ namespace shadetree {
 VolumeDesc parse_volume(const JsonReader& reader, const json& volume);
 
 // The step a volume is marched at (its own, or the default for its
-// bounds), and its reference step.
+// bounds), and its reference step (its own, or the default step: not the
+// march step, so that a finer march does not make the volume denser).
 float march_step(const VolumeDesc& volume);
 float reference_step(const VolumeDesc& volume);
 

@@ -71,7 +71,7 @@ struct VolumeDesc {
   std::array<float, 3> bounds_min{0.0f, 0.0f, 0.0f};  // required; min < max on every axis
   std::array<float, 3> bounds_max{0.0f, 0.0f, 0.0f};
   float step = 0.0f;            // in the units of P; 0: the bounds' diagonal / default_steps_across
-  float reference_step = 0.0f;  // the step at which opacity is the graph's; 0: the same as step
+  float reference_step = 0.0f;  // the step at which opacity is the graph's; 0: the default step
   bool jitter = false;          // start each ray at a random fraction of a step (noise for banding)
 };
 

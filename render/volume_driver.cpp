@@ -252,7 +252,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   const OutputLayout& layout = kernel.outputs();
   if (layout.kind != GraphKind::volume || !layout.provides(OutputId::density))
     return invalid_input("the ray marcher needs a volume graph with an output \"density\"");
-  const float step = options.step > 0.0f ? options.step : march_step(volume);
+  const float step = options.step != 0.0f ? options.step : march_step(volume);
   if (std::string problem = step_problem(volume, step); !problem.empty()) return invalid_input(problem);
   const bool jitter = options.jitter.value_or(volume.jitter);
   const Marcher marcher(kernel, scene, volume, step, reference_step(volume), jitter, options);

@@ -36,7 +36,7 @@ inline constexpr float default_termination = 1.0f / 512.0f;
 
 struct VolumeRenderOptions {
   int threads = 0;             // 0: all cores
-  float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step)
+  float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step); others are checked
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time

@@ -214,6 +214,48 @@ TEST_F(Cli, ImageGraphsReadTheirFilesAndRefuseBadOnes) {
   EXPECT_TRUE(fs::exists(out));
 }
 
+TEST_F(Cli, VolumeGraphsRenderThroughTheRayMarcher) {
+  const std::string out = (directory_ / "sphere.png").string();
+  const CommandResult run = shadetree("render " + gallery + "noisy_sphere.json -o " + out + " --size 24x24 --step 0.05");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("24x24, "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("density samples"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("lanes in use"), std::string::npos) << run.err;
+  Result<Image> image = read_image(out);
+  ASSERT_TRUE(image.ok());
+  EXPECT_EQ(image->width, 24);
+}
+
+TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
+  const std::string out = (directory_ / "out.png").string();
+  const std::string bounded = R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}})";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "needs render.volume"},
+      {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "step": 0})", "step must be positive"},
+      {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "step": 1e-6})", "too small"},
+      {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [-1, 1, 1]}})", "empty"},
+      {bounded + R"(, "scene": {"objects": [{"type": "sphere"}]})", "holds no objects"}};
+  for (const auto& [render, words] : cases) {
+    const fs::path graph = write("volume.json", R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
+        "nodes": [], "outputs": {"density": 0.5}, "render": {)" + render + "}}");
+    const CommandResult run = shadetree("render " + graph.string() + " -o " + out + " --size 8x8");
+    EXPECT_EQ(run.status, 2) << render << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find(words), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const fs::path graph = write("volume.json", R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
+      "nodes": [], "outputs": {"density": 0.5}, "render": {)" + bounded + "}}");
+  for (const std::string& options : {"--step 0", "--step -1", "--step 1e-7", "--spp 4", "--object torus"}) {
+    const CommandResult run = shadetree("render " + graph.string() + " -o " + out + " --size 8x8 " + options);
+    EXPECT_EQ(run.status, 2) << options << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  EXPECT_EQ(shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --step 0.1").status, 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, RenderWritesTheImageAndASummary) {
   const std::string out = (directory_ / "marble.png").string();
   const CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 32x16 --threads 2");

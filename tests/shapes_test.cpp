@@ -174,3 +174,44 @@ TEST(Revolution, RandomHitsLieOnTheProfile) {
 
 }  // namespace
 }  // namespace shadetree
+
+namespace shadetree {
+namespace {
+
+// Slabs against closed forms: a ray down -z from z = 5 enters the box
+// [-1, 1]^3 at t = 4 through z = 1 and leaves at t = 6.
+TEST(ClipToBox, EntryAndExitOfAnAxisRay) {
+  const std::optional<Span> span =
+      clip_to_box(Ray{{0.2f, -0.3f, 5.0f}, {0.0f, 0.0f, -1.0f}}, glm::vec3(-1.0f), glm::vec3(1.0f));
+  ASSERT_TRUE(span);
+  EXPECT_FLOAT_EQ(span->near, 4.0f);
+  EXPECT_FLOAT_EQ(span->far, 6.0f);
+  EXPECT_EQ(span->near_axis, 2);
+  EXPECT_EQ(span->far_axis, 2);
+}
+
+// A diagonal ray through the corner region: it enters through x = -1 at
+// t = 1 and leaves through y = 2 at t = 2 (x = 0 then).
+TEST(ClipToBox, DiagonalRayEntersAndLeavesThroughDifferentFaces) {
+  const std::optional<Span> span =
+      clip_to_box(Ray{{-2.0f, 0.0f, 0.5f}, {1.0f, 1.0f, 0.0f}}, glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(1.0f, 2.0f, 1.0f));
+  ASSERT_TRUE(span);
+  EXPECT_FLOAT_EQ(span->near, 1.0f);
+  EXPECT_EQ(span->near_axis, 0);
+  EXPECT_FLOAT_EQ(span->far, 2.0f);
+  EXPECT_EQ(span->far_axis, 1);
+}
+
+TEST(ClipToBox, MissesAndParallelRays) {
+  EXPECT_FALSE(clip_to_box(Ray{{3.0f, 3.0f, 5.0f}, {0.0f, 0.0f, -1.0f}}, glm::vec3(-1.0f), glm::vec3(1.0f)));
+  // Parallel to x and z, outside the y slab.
+  EXPECT_FALSE(clip_to_box(Ray{{0.0f, 1.5f, 5.0f}, {0.0f, 0.0f, -1.0f}}, glm::vec3(-1.0f), glm::vec3(1.0f)));
+  // From inside: the entry lies behind the origin.
+  const std::optional<Span> inside = clip_to_box(Ray{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}}, glm::vec3(-1.0f), glm::vec3(1.0f));
+  ASSERT_TRUE(inside);
+  EXPECT_FLOAT_EQ(inside->near, -1.0f);
+  EXPECT_FLOAT_EQ(inside->far, 1.0f);
+}
+
+}  // namespace
+}  // namespace shadetree

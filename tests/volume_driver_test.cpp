@@ -1,0 +1,216 @@
+// The ray marcher: compositing against the closed-form transmittance of a
+// constant density, step independence, early termination, packets,
+// backends and threads, on volume graphs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "graph/parse_volume.h"
+#include "interp/interpreter.h"
+#include "jit/jit_kernel.h"
+#include "pipeline/compile_graph.h"
+#include "render/volume_driver.h"
+#include "support/gallery.h"
+#include "support/graph_text.h"
+
+namespace shadetree {
+namespace {
+
+LoadedGraph compile_volume(const std::string& nodes, const std::string& outputs) {
+  Result<LoadedGraph> loaded = compile_graph_text(testing::graph_text(nodes, outputs, "", "volume"), "volume.json");
+  EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+  return std::move(*loaded);
+}
+
+// An orthographic camera looking down -z at the box [-1, 1]^3, 3 units
+// high, so the middle of the image sees the box's full thickness of 2.
+SceneDesc looking_down_z(Lighting lighting) {
+  SceneDesc desc;
+  desc.camera.position = {0.0f, 0.0f, 5.0f};
+  desc.camera.orthographic = true;
+  desc.camera.orthographic_height = 3.0f;
+  desc.background = {0.0f, 0.0f, 0.0f};
+  desc.ambient = {0.0f, 0.0f, 0.0f};
+  desc.lighting = lighting;
+  LightDesc sun;
+  sun.direction = {0.0f, 0.0f, -1.0f};
+  desc.lights = {sun};
+  return desc;
+}
+
+VolumeDesc unit_box(float step) {
+  VolumeDesc volume;
+  volume.bounds_min = {-1.0f, -1.0f, -1.0f};
+  volume.bounds_max = {1.0f, 1.0f, 1.0f};
+  volume.step = step;
+  return volume;
+}
+
+Image render(const Kernel& kernel, const LoadedGraph& loaded, const SceneDesc& desc, const VolumeDesc& volume,
+             int size, VolumeRenderOptions options = {}, VolumeRenderStats* stats = nullptr) {
+  Result<Scene> scene = Scene::build(desc, "volume.json", {});
+  EXPECT_TRUE(scene.ok()) << scene.error().to_string();
+  VolumeView view;
+  view.width = view.height = size;
+  Result<Image> image =
+      render_volume(kernel, loaded.params, *scene, volume, Camera(desc.camera, size, size), view, options, stats);
+  EXPECT_TRUE(image.ok()) << image.error().to_string();
+  return std::move(*image);
+}
+
+float centre_red(const Image& image) {
+  return image.pixels[(static_cast<std::size_t>(image.height / 2) * image.width + image.width / 2) * 3];
+}
+
+float largest_difference(const Image& a, const Image& b) {
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) largest = std::max(largest, std::fabs(a.pixels[i] - b.pixels[i]));
+  return largest;
+}
+
+// 1989: alpha_k = 1 - (1 - density)^(step / reference step) per sample, so
+// that through a thickness L of constant density d the opacity is
+// 1 - (1 - d)^(L / reference step), whatever the step and the jitter.
+TEST(VolumeDriver, ConstantDensityGivesTheClosedFormTransmittance) {
+  const LoadedGraph loaded = compile_volume("", R"("density": 0.3, "color": [1, 1, 1])");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  VolumeRenderOptions exact;
+  exact.termination = 0.0f;
+  for (float step : {0.1f, 0.03f, 0.007f})
+    for (bool jitter : {false, true}) {
+      VolumeDesc volume = unit_box(step);
+      volume.reference_step = 0.25f;
+      volume.jitter = jitter;
+      const float expected = 1.0f - std::pow(0.7f, 2.0f / 0.25f);
+      EXPECT_NEAR(centre_red(render(*kernel, loaded, looking_down_z(Lighting::none), volume, 9, exact)), expected, 1e-4f)
+          << "step " << step << (jitter ? " jittered" : "");
+    }
+}
+
+// Outside the box the ray sees the background only.
+TEST(VolumeDriver, RaysThatMissTheBoundsShowTheBackground) {
+  const LoadedGraph loaded = compile_volume("", R"("density": 1, "color": [1, 1, 1])");
+  SceneDesc desc = looking_down_z(Lighting::none);
+  desc.background = {0.25f, 0.5f, 0.75f};
+  VolumeRenderStats stats;
+  const Image image = render(*make_interpreted_kernel(loaded.ir), loaded, desc, unit_box(0.05f), 30, {}, &stats);
+  EXPECT_EQ(image.pixels[0], 0.25f);
+  EXPECT_EQ(image.pixels[2], 0.75f);
+  EXPECT_FLOAT_EQ(centre_red(image), 1.0f);
+  EXPECT_EQ(stats.rays, 20 * 20);  // the box spans 2 of the image's 3 units
+}
+
+const char* const soft_sphere = R"({"id": "p", "op": "P"},
+    {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 0.6, "softness": 0.6}},
+    {"id": "thin", "op": "mul", "in": {"a": "s", "b": 0.2}},
+    {"id": "c", "op": "to_color", "in": {"v": "p"}}, {"id": "tint", "op": "abs", "in": {"x": "c"}})";
+
+// Halving the step changes a soft sphere's picture by little: opacity is
+// normalized by the step, and only the sampling of the density changes.
+TEST(VolumeDriver, HalvingTheStepChangesLittle) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "thin", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  for (Lighting lighting : {Lighting::none, Lighting::lit}) {
+    const Image coarse = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.02f), 40);
+    const Image fine = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.01f), 40);
+    EXPECT_LT(largest_difference(coarse, fine), 0.01f) << (lighting == Lighting::lit ? "lit" : "unlit");
+    EXPECT_GT(*std::max_element(fine.pixels.begin(), fine.pixels.end()), 0.1f);
+  }
+}
+
+// A ray stops once its opacity passes 1 - termination: what it leaves out
+// is at most termination times the brightest colour (here 1).
+TEST(VolumeDriver, EarlyTerminationChangesNoPixelByMoreThanItsEpsilon) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  VolumeRenderOptions full;
+  full.termination = 0.0f;
+  VolumeRenderStats early_stats, full_stats;
+  const Image early = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, {}, &early_stats);
+  const Image complete = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, full, &full_stats);
+  EXPECT_LE(largest_difference(early, complete), default_termination);
+  EXPECT_LT(early_stats.density_samples, full_stats.density_samples);
+}
+
+// Each ray's arithmetic depends only on the ray: marching a tile's rays
+// together, compacting as they end, gives the pixels of one ray at a time.
+TEST(VolumeDriver, PacketsAndThreadCountsChangeNoPixel) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  VolumeRenderOptions one_ray, one_thread, packets;
+  one_ray.packet_rays = 1;
+  one_thread.threads = 1;
+  packets.threads = 2;
+  packets.lane_width = 8;
+  VolumeRenderStats stats;
+  const Image alone = render(*kernel, loaded, looking_down_z(Lighting::lit), unit_box(0.02f), 40, one_ray);
+  EXPECT_EQ(alone.pixels, render(*kernel, loaded, looking_down_z(Lighting::lit), unit_box(0.02f), 40, one_thread).pixels);
+  EXPECT_EQ(alone.pixels,
+            render(*kernel, loaded, looking_down_z(Lighting::lit), unit_box(0.02f), 40, packets, &stats).pixels);
+  EXPECT_GT(stats.gradient_samples, 0);
+  EXPECT_GT(stats.lane_utilisation(), 0.9);
+  EXPECT_LE(stats.lane_utilisation(), 1.0);
+}
+
+TEST(VolumeDriver, StepAndFrameReachTheGraph) {
+  const LoadedGraph loaded =
+      compile_volume(R"({"id": "st", "op": "step_size"}, {"id": "f", "op": "frame"}, {"id": "fw", "op": "filter_width"},
+                        {"id": "c", "op": "color", "in": {"r": "st", "g": "f", "b": "fw"}})",
+                     R"("density": 1, "color": "c")");
+  Result<Scene> scene = Scene::build(looking_down_z(Lighting::none), "volume.json", {});
+  ASSERT_TRUE(scene.ok());
+  VolumeView view;
+  view.width = view.height = 5;
+  view.frame = 7.0f;
+  Result<Image> image = render_volume(*make_interpreted_kernel(loaded.ir), loaded.params, *scene, unit_box(0.125f),
+                                      Camera(scene->desc().camera, 5, 5), view, {});
+  ASSERT_TRUE(image.ok());
+  const std::size_t centre = (2 * 5 + 2) * 3;
+  EXPECT_EQ(image->pixels[centre], 0.125f);
+  EXPECT_EQ(image->pixels[centre + 1], 7.0f);
+  EXPECT_EQ(image->pixels[centre + 2], 0.125f);
+}
+
+TEST(VolumeDriver, RefusesStepsThatAreNotPositiveOrTooSmall) {
+  const LoadedGraph loaded = compile_volume("", R"("density": 0.5)");
+  Result<Scene> scene = Scene::build(looking_down_z(Lighting::none), "volume.json", {});
+  ASSERT_TRUE(scene.ok());
+  for (float step : {-1.0f, 1e-6f}) {
+    VolumeRenderOptions options;
+    options.step = step;
+    Result<Image> image = render_volume(*make_interpreted_kernel(loaded.ir), loaded.params, *scene, unit_box(0.1f),
+                                        Camera(scene->desc().camera, 4, 4), VolumeView{4, 4, 0.0f}, options);
+    ASSERT_FALSE(image.ok()) << step;
+    EXPECT_EQ(image.error().status, ExitStatus::invalid_input);
+  }
+}
+
+// Every volume graph of the gallery: the interpreter and the JIT give the
+// same picture, which is not blank.
+TEST(VolumeDriver, GalleryBackendsAgree) {
+  const auto files = testing::gallery_graphs(GraphKind::volume);
+  EXPECT_FALSE(files.empty());
+  for (const std::string& file : files) {
+    Result<LoadedGraph> loaded = testing::load_gallery_graph(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    const RenderSettings& settings = loaded->graph->render;
+    ASSERT_TRUE(settings.volume) << file;
+    SceneDesc desc = settings.scene.value_or(SceneDesc{});
+    if (!settings.scene) desc.lights = default_lights();
+    auto interpreted = make_interpreted_kernel(loaded->ir);
+    Result<std::unique_ptr<Kernel>> compiled = make_jit_kernel(loaded->ir);
+    ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+    VolumeDesc volume = *settings.volume;
+    volume.step = std::max(march_step(volume), 0.02f);  // a coarse march keeps the test quick
+    const Image a = render(*interpreted, *loaded, desc, volume, 64);
+    const Image b = render(**compiled, *loaded, desc, volume, 64);
+    EXPECT_LE(largest_difference(a, b), 1e-4f) << file;
+    EXPECT_EQ(a.pixels, b.pixels) << file << ": the backends agree to the bit";
+    const auto [low, high] = std::minmax_element(a.pixels.begin(), a.pixels.end());
+    EXPECT_GT(*high - *low, 0.1f) << file << ": the image is (nearly) constant";
+  }
+}
+
+}  // namespace
+}  // namespace shadetree
