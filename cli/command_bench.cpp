@@ -5,7 +5,8 @@
 // render domain), fed straight to the kernel so that every graph kind can
 // be measured. Surface graphs are also rendered by the surface driver on
 // their scene, with the time of each stage and the shading stage's
-// throughput against the kernel's own on the texture samples.
+// throughput against the kernel's own on the texture samples; volume
+// graphs by the ray marcher, with its density throughput and lane use.
 #include <algorithm>
 #include <chrono>
 #include <tuple>
@@ -18,6 +19,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "graph/parse_volume.h"
 #include "pipeline/compile_graph.h"
 #include "render/graph_images.h"
 #include "interp/interpreter.h"
@@ -26,6 +28,7 @@
 #include "render/surface_driver.h"
 #include "render/texture_driver.h"
 #include "render/thread_bindings.h"
+#include "render/volume_driver.h"
 
 namespace shadetree {
 
@@ -56,13 +59,13 @@ Samples make_samples(const TextureView& view, const Kernel& kernel) {
 }
 
 // Median samples per second of `repetitions` runs after one warm-up run.
-double measure(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
+double measure(const Kernel& kernel, const std::vector<float>& params, const UniformInputs& uniforms,
                const Samples& samples, int threads, int repetitions) {
   constexpr std::size_t chunk = 4096;
   OutputBuffers output_buffers(samples.count, kernel.outputs());
   const std::vector<float*> outputs(output_buffers.planes(), output_buffers.planes() + kernel.outputs().plane_count);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
+  ThreadBindings bindings(kernel, params.data(), uniforms);
   auto run_once = [&] {
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), (samples.count + chunk - 1) / chunk, [&](std::size_t c) {
@@ -87,29 +90,116 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Tex
   return static_cast<double>(samples.count) / seconds[seconds.size() / 2];
 }
 
-// A surface render's stages (seconds of thread time) and its wall time:
-// those of the run with the median wall time, after one warm-up run.
-struct SurfaceTiming {
-  SurfaceRenderStats stats;
+// A driver's render: its statistics (stage times in seconds of thread
+// time) and its wall time, for the run with the median wall time of
+// `repetitions` after one warm-up run.
+template <class Stats>
+struct Timing {
+  Stats stats;
   double seconds = 0;
 };
 
-SurfaceTiming measure_surface(const Kernel& kernel, const LoadedGraph& loaded, const Scene& scene,
-                              const SurfaceView& view, int threads, int repetitions) {
-  const Camera camera(scene.desc().camera, view.width, view.height);
-  SurfaceRenderOptions options;
-  options.threads = threads;
-  std::vector<SurfaceTiming> runs;
+template <class Stats, class Render>
+Timing<Stats> median_render(int repetitions, Render render) {
+  std::vector<Timing<Stats>> runs;
   for (int r = 0; r <= repetitions; ++r) {
-    SurfaceTiming timing;
+    Timing<Stats> timing;
     const auto start = std::chrono::steady_clock::now();
-    render_surface(kernel, loaded.params, scene, camera, view, options, &timing.stats);
+    render(timing.stats);
     timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (r > 0) runs.push_back(timing);
   }
   std::nth_element(runs.begin(), runs.begin() + runs.size() / 2, runs.end(),
-                   [](const SurfaceTiming& a, const SurfaceTiming& b) { return a.seconds < b.seconds; });
+                   [](const Timing<Stats>& a, const Timing<Stats>& b) { return a.seconds < b.seconds; });
   return runs[runs.size() / 2];
+}
+
+// The backends a driver is measured with, and each one's kernel rate on
+// the texture samples (1 thread), which the driver's rate is compared to.
+struct MeasuredBackend {
+  const char* name;
+  const Kernel* kernel;
+  double kernel_sps;
+};
+
+// The surface driver on the graph's scene (or the preview sphere).
+Status bench_surface(const LoadedGraph& loaded, const std::string& file, const TextureView& view,
+                     const std::vector<MeasuredBackend>& backends, const BenchArguments& arguments,
+                     nlohmann::ordered_json& results, std::vector<std::string>& rows) {
+  Result<Scene> scene = Scene::build(
+      loaded.graph->render.scene ? *loaded.graph->render.scene : SceneDesc(*preview_scene("sphere")), file, {});
+  if (!scene) return scene.error();
+  SurfaceView surface_view;
+  surface_view.width = view.width;
+  surface_view.height = view.height;
+  const Camera camera(scene->desc().camera, view.width, view.height);
+  for (const MeasuredBackend& backend : backends)
+    for (int threads : {1, arguments.threads}) {
+      SurfaceRenderOptions options;
+      options.threads = threads;
+      const auto timing = median_render<SurfaceRenderStats>(arguments.repetitions, [&](SurfaceRenderStats& stats) {
+        render_surface(*backend.kernel, loaded.params, *scene, camera, surface_view, options, &stats);
+      });
+      const double shading_sps = static_cast<double>(timing.stats.visible_samples) / timing.stats.shading_seconds;
+      results.push_back({{"backend", backend.name},
+                         {"threads", threads},
+                         {"visible_samples", timing.stats.visible_samples},
+                         {"visibility_s", timing.stats.visibility_seconds},
+                         {"shading_s", timing.stats.shading_seconds},
+                         {"lighting_s", timing.stats.lighting_seconds},
+                         {"total_s", timing.seconds},
+                         {"shading_sps", shading_sps},
+                         {"shading_vs_kernel", shading_sps / backend.kernel_sps}});
+      char row[256];
+      std::snprintf(row, sizeof row, "%-16s %-7s %7s %9ld %9.3f %9.3f %9.3f %9.3f %9.2fM %8.2fx",
+                    loaded.graph->name.c_str(), backend.name, threads == 1 ? "1" : "all",
+                    timing.stats.visible_samples, timing.stats.visibility_seconds, timing.stats.shading_seconds,
+                    timing.stats.lighting_seconds, timing.seconds, shading_sps / 1e6, shading_sps / backend.kernel_sps);
+      rows.push_back(row);
+    }
+  return success();
+}
+
+// The ray marcher on the graph's volume and scene.
+Status bench_volume(const LoadedGraph& loaded, const std::string& file, const TextureView& view,
+                    const std::vector<MeasuredBackend>& backends, const BenchArguments& arguments,
+                    nlohmann::ordered_json& results, std::vector<std::string>& rows) {
+  if (!loaded.graph->render.volume) return invalid_input(file + ": a volume graph needs render.volume to be marched");
+  const SceneDesc desc = volume_scene(loaded.graph->render.scene);
+  Result<Scene> scene = Scene::build(desc, file, {});
+  if (!scene) return scene.error();
+  VolumeView volume_view;
+  volume_view.width = view.width;
+  volume_view.height = view.height;
+  const Camera camera(desc.camera, view.width, view.height);
+  for (const MeasuredBackend& backend : backends)
+    for (int threads : {1, arguments.threads}) {
+      VolumeRenderOptions options;
+      options.threads = threads;
+      options.lane_width = host_vector_width();
+      const auto timing = median_render<VolumeRenderStats>(arguments.repetitions, [&](VolumeRenderStats& stats) {
+        render_volume(*backend.kernel, loaded.params, *scene, *loaded.graph->render.volume, camera, volume_view,
+                      options, &stats);
+      });
+      const double density_sps = static_cast<double>(timing.stats.density_samples) / timing.stats.kernel_seconds;
+      results.push_back({{"backend", backend.name},
+                         {"threads", threads},
+                         {"rays", timing.stats.rays},
+                         {"density_samples", timing.stats.density_samples},
+                         {"lane_utilisation", timing.stats.lane_utilisation()},
+                         {"kernel_s", timing.stats.kernel_seconds},
+                         {"march_s", timing.stats.march_seconds},
+                         {"total_s", timing.seconds},
+                         {"density_sps", density_sps},
+                         {"density_vs_kernel", density_sps / backend.kernel_sps}});
+      char row[256];
+      std::snprintf(row, sizeof row, "%-16s %-7s %7s %11ld %7.1f%% %9.3f %9.3f %9.3f %9.2fM %8.2fx",
+                    loaded.graph->name.c_str(), backend.name, threads == 1 ? "1" : "all",
+                    timing.stats.density_samples, 100.0 * timing.stats.lane_utilisation(), timing.stats.kernel_seconds,
+                    timing.stats.march_seconds, timing.seconds, density_sps / 1e6, density_sps / backend.kernel_sps);
+      rows.push_back(row);
+    }
+  return success();
 }
 
 ExitStatus bench(const BenchArguments& arguments) {
@@ -125,7 +215,7 @@ ExitStatus bench(const BenchArguments& arguments) {
   if (!arguments.json)
     std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
                 "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
-  std::vector<std::string> surface_rows;
+  std::vector<std::string> surface_rows, volume_rows;
   for (const std::string& file : arguments.files) {
     Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_image_reader());
     if (!loaded) return report(loaded.error());
@@ -147,45 +237,25 @@ ExitStatus bench(const BenchArguments& arguments) {
     auto interp = make_interpreted_kernel(loaded->ir);
     const Samples samples = make_samples(*view, *interp);
 
+    // A volume's samples see its march step, so that ops clamped by it
+    // do the same work here as in the marcher.
+    UniformInputs uniforms = texture_uniforms(*view);
+    if (loaded->graph->render.volume) uniforms.set(GlobalId::step_size, march_step(*loaded->graph->render.volume));
     const int all = arguments.threads;
-    const double interp_1t = measure(*interp, loaded->params, *view, samples, 1, arguments.repetitions);
-    const double interp_mt = measure(*interp, loaded->params, *view, samples, all, arguments.repetitions);
-    const double jit_1t = measure(**jit, loaded->params, *view, samples, 1, arguments.repetitions);
-    const double jit_mt = measure(**jit, loaded->params, *view, samples, all, arguments.repetitions);
+    const double interp_1t = measure(*interp, loaded->params, uniforms, samples, 1, arguments.repetitions);
+    const double interp_mt = measure(*interp, loaded->params, uniforms, samples, all, arguments.repetitions);
+    const double jit_1t = measure(**jit, loaded->params, uniforms, samples, 1, arguments.repetitions);
+    const double jit_mt = measure(**jit, loaded->params, uniforms, samples, all, arguments.repetitions);
     const std::string name = loaded->graph->name;
-    nlohmann::ordered_json surface = nlohmann::json::array();
+    nlohmann::ordered_json driver = nlohmann::json::array();
+    const std::vector<MeasuredBackend> backends = {{"jit", jit->get(), jit_1t}, {"interp", interp.get(), interp_1t}};
     if (loaded->graph->kind == GraphKind::surface) {
-      Result<Scene> scene = Scene::build(loaded->graph->render.scene ? *loaded->graph->render.scene
-                                                                     : SceneDesc(*preview_scene("sphere")),
-                                         file, {});
-      if (!scene) return report(scene.error());
-      SurfaceView surface_view;
-      surface_view.width = view->width;
-      surface_view.height = view->height;
-      for (const auto& [backend, kernel, kernel_sps] :
-           {std::tuple<const char*, const Kernel*, double>{"jit", jit->get(), jit_1t},
-            std::tuple<const char*, const Kernel*, double>{"interp", interp.get(), interp_1t}}) {
-        for (int threads : {1, all}) {
-          const SurfaceTiming timing =
-              measure_surface(*kernel, *loaded, *scene, surface_view, threads, arguments.repetitions);
-          const double shading_sps = static_cast<double>(timing.stats.visible_samples) / timing.stats.shading_seconds;
-          surface.push_back({{"backend", backend},
-                             {"threads", threads},
-                             {"visible_samples", timing.stats.visible_samples},
-                             {"visibility_s", timing.stats.visibility_seconds},
-                             {"shading_s", timing.stats.shading_seconds},
-                             {"lighting_s", timing.stats.lighting_seconds},
-                             {"total_s", timing.seconds},
-                             {"shading_sps", shading_sps},
-                             {"shading_vs_kernel", shading_sps / kernel_sps}});
-          char row[256];
-          std::snprintf(row, sizeof row, "%-16s %-7s %7s %9ld %9.3f %9.3f %9.3f %9.3f %9.2fM %8.2fx", name.c_str(),
-                        backend, threads == 1 ? "1" : "all", timing.stats.visible_samples,
-                        timing.stats.visibility_seconds, timing.stats.shading_seconds, timing.stats.lighting_seconds,
-                        timing.seconds, shading_sps / 1e6, shading_sps / kernel_sps);
-          surface_rows.push_back(row);
-        }
-      }
+      Status measured = bench_surface(*loaded, file, *view, backends, arguments, driver, surface_rows);
+      if (!measured) return report(measured.error());
+    }
+    if (loaded->graph->kind == GraphKind::volume) {
+      Status measured = bench_volume(*loaded, file, *view, backends, arguments, driver, volume_rows);
+      if (!measured) return report(measured.error());
     }
     if (arguments.json) {
       results.push_back({{"graph", name},
@@ -198,7 +268,7 @@ ExitStatus bench(const BenchArguments& arguments) {
                          {"interp_sps_mt", interp_mt},
                          {"jit_sps_1t", jit_1t},
                          {"jit_sps_mt", jit_mt},
-                         {"surface_driver", surface}});
+                         {loaded->graph->kind == GraphKind::volume ? "volume_driver" : "surface_driver", driver}});
     } else {
       std::printf("%-16s %8zu %5d->%-5zu %9.2f %9.3f %10.2fM %10.2fM %10.2fM %10.2fM %8.1fx\n", name.c_str(),
                   samples.count, loaded->instructions_before_optimization, loaded->ir.code.size(),
@@ -214,6 +284,13 @@ ExitStatus bench(const BenchArguments& arguments) {
     std::printf("%-16s %-7s %7s %9s %9s %9s %9s %9s %10s %9s\n", "graph", "backend", "threads", "visible",
                 "visib. s", "shading s", "light. s", "total s", "shading", "vs kernel");
     for (const std::string& row : surface_rows) std::printf("%s\n", row.c_str());
+  }
+  if (!arguments.json && !volume_rows.empty()) {
+    std::printf("\nray marcher (kernel and march: thread seconds; density throughput vs the kernel's 1-thread rate on "
+                "the texture samples)\n");
+    std::printf("%-16s %-7s %7s %11s %8s %9s %9s %9s %10s %9s\n", "graph", "backend", "threads", "samples", "lanes",
+                "kernel s", "march s", "total s", "density", "vs kernel");
+    for (const std::string& row : volume_rows) std::printf("%s\n", row.c_str());
   }
   return ExitStatus::ok;
 }

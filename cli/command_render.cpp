@@ -81,8 +81,7 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
   if (arguments.step)
     if (std::string problem = step_problem(volume, *arguments.step); !problem.empty())
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step: " + problem};
-  SceneDesc desc = graph.render.scene.value_or(SceneDesc{});
-  if (!graph.render.scene) desc.lights = default_lights();
+  const SceneDesc desc = volume_scene(graph.render.scene);
   auto scene = std::make_shared<Result<Scene>>(Scene::build(desc, graph.file, arguments.search_paths));
   if (!*scene) return (*scene).error();
   Result<std::pair<int, int>> size = image_size(graph, arguments.size);

@@ -238,6 +238,13 @@ class Marcher {
 
 }  // namespace
 
+SceneDesc volume_scene(const std::optional<SceneDesc>& scene) {
+  if (scene) return *scene;
+  SceneDesc desc;
+  desc.lights = default_lights();
+  return desc;
+}
+
 UniformInputs volume_uniforms(float frame, float step) {
   UniformInputs uniforms;
   uniforms.set(GlobalId::time, frame / frames_per_second);

@@ -60,6 +60,10 @@ struct VolumeRenderStats {
   }
 };
 
+// The scene a volume graph is marched in: its render section's, or the
+// default camera under the default key and fill lights.
+SceneDesc volume_scene(const std::optional<SceneDesc>& scene);
+
 // The uniform globals of a frame: time, frame and the march step.
 UniformInputs volume_uniforms(float frame, float step);
 

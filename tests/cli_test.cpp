@@ -332,6 +332,19 @@ TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   EXPECT_GT(results[1]["jit_sps_1t"].get<double>(), 0.0);
 }
 
+TEST_F(Cli, BenchMarchesVolumeGraphs) {
+  const CommandResult run =
+      shadetree("bench " + gallery + "noisy_sphere.json --size 16x16 --repetitions 1 --threads 2 --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto marcher = nlohmann::json::parse(run.out)[0]["volume_driver"];
+  ASSERT_EQ(marcher.size(), 4u);  // jit and interp, at 1 and 2 threads
+  for (const char* key : {"backend", "threads", "rays", "density_samples", "lane_utilisation", "kernel_s", "march_s",
+                          "total_s", "density_sps", "density_vs_kernel"})
+    EXPECT_TRUE(marcher[0].contains(key)) << key;
+  EXPECT_GT(marcher[0]["density_samples"].get<long>(), 16 * 16);
+  EXPECT_GT(marcher[0]["lane_utilisation"].get<double>(), 0.5);
+}
+
 TEST_F(Cli, NodesMarkdownIsTheCommittedReference) {
   const CommandResult run = shadetree("nodes --markdown");
   ASSERT_EQ(run.status, 0);

@@ -196,8 +196,7 @@ TEST(VolumeDriver, GalleryBackendsAgree) {
     ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
     const RenderSettings& settings = loaded->graph->render;
     ASSERT_TRUE(settings.volume) << file;
-    SceneDesc desc = settings.scene.value_or(SceneDesc{});
-    if (!settings.scene) desc.lights = default_lights();
+    const SceneDesc desc = volume_scene(settings.scene);
     auto interpreted = make_interpreted_kernel(loaded->ir);
     Result<std::unique_ptr<Kernel>> compiled = make_jit_kernel(loaded->ir);
     ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
