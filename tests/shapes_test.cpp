@@ -172,12 +172,6 @@ TEST(Revolution, RandomHitsLieOnTheProfile) {
   EXPECT_GT(hits, 100);
 }
 
-}  // namespace
-}  // namespace shadetree
-
-namespace shadetree {
-namespace {
-
 // Slabs against closed forms: a ray down -z from z = 5 enters the box
 // [-1, 1]^3 at t = 4 through z = 1 and leaves at t = 6.
 TEST(ClipToBox, EntryAndExitOfAnAxisRay) {

@@ -1,5 +1,8 @@
-// Soft objects and generalized booleans (Perlin & Hoffert 1989 sections 2.1, 2.2).
+// Soft objects and generalized booleans (Perlin & Hoffert 1989 sections 2.1, 2.2),
+// and the closest points of their surfaces (section 2.4's project).
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "nodes/semantics/soft_objects.h"
 
@@ -51,6 +54,41 @@ TEST(GeneralizedBooleans, MatchTheirFormulas) {
       EXPECT_FLOAT_EQ(soft_difference(a, b), soft_intersect(a, soft_complement(b)));
       EXPECT_NEAR(soft_union(a, b), soft_complement(soft_intersect(soft_complement(a), soft_complement(b))), 1e-6f);
     }
+}
+
+
+float distance(const Vec3<float>& a, const Vec3<float>& b) {
+  const Vec3<float> d{a.x - b.x, a.y - b.y, a.z - b.z};
+  return std::sqrt(dot3(d, d));
+}
+
+TEST(ClosestOnSphere, ProjectsAlongTheRadius) {
+  const Vec3<float> q = closest_on_sphere<float>({3.0f, 4.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, 2.0f);
+  const float scale = 2.0f / std::sqrt(9.0f + 16.0f + 1.0f);
+  EXPECT_FLOAT_EQ(q.x, 3.0f * scale);
+  EXPECT_FLOAT_EQ(q.y, 4.0f * scale);
+  EXPECT_FLOAT_EQ(q.z, 1.0f - scale);
+  const Vec3<float> top = closest_on_sphere<float>({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}, 2.0f);
+  EXPECT_EQ(top.y, 2.0f);
+}
+
+// The closest point lies on the surface, at the distance the torus's own
+// distance function gives, for points inside and outside the tube.
+TEST(ClosestOnTorus, LiesOnTheSurfaceAtTheSurfaceDistance) {
+  const float major = 1.5f, minor = 0.4f;
+  for (const Vec3<float> p : {Vec3<float>{2.5f, 0.0f, 0.3f}, Vec3<float>{-0.4f, 1.2f, -0.1f},
+                              Vec3<float>{0.7f, -0.9f, 0.9f}, Vec3<float>{1.5f, 0.0f, 0.1f}}) {
+    const Vec3<float> q = closest_on_torus<float>(p, {0.0f, 0.0f, 0.0f}, major, minor);
+    const float ring = std::sqrt(q.x * q.x + q.y * q.y) - major;
+    EXPECT_NEAR(std::sqrt(ring * ring + q.z * q.z), minor, 1e-5f);
+    const float p_ring = std::sqrt(p.x * p.x + p.y * p.y) - major;
+    EXPECT_NEAR(distance(p, q), std::fabs(std::sqrt(p_ring * p_ring + p.z * p.z) - minor), 1e-5f);
+  }
+  // On the axis and on the core circle: the fallbacks stay on the surface.
+  const Vec3<float> axis = closest_on_torus<float>({0.0f, 0.0f, 0.5f}, {0.0f, 0.0f, 0.0f}, major, minor);
+  EXPECT_NEAR(distance(axis, {major, 0.0f, 0.0f}), minor, 1e-5f);
+  const Vec3<float> core = closest_on_torus<float>({0.0f, major, 0.0f}, {0.0f, 0.0f, 0.0f}, major, minor);
+  EXPECT_NEAR(core.y, major + minor, 1e-5f);
 }
 
 }  // namespace

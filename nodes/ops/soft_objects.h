@@ -53,6 +53,38 @@ struct torus {
   }
 };
 
+// Geometry-dependent DMFs (1989 section 2.4, hair and fur: "project each
+// point x in the soft region perpendicularly down to the inner solid
+// boundary") and the vector fields of Gilet & Dischler 2010 section 4.4
+// ("a field that shifts all space points exactly on the sphere boundary":
+// closest_on_sphere(p) - p).
+struct closest_on_sphere {
+  static OpDef definition() {
+    return {.name = "closest_on_sphere", .family = OpFamily::soft_object,
+            .doc = "the point of a sphere's surface closest to p (1989 project; 2010 vector field to the boundary)",
+            .inputs = {in("p", Type::vec3), in("center", Type::vec3, 0.0f), in("radius", Type::float_, 1.0f)},
+            .outputs = {out(Type::vec3)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    frame::store_vec3(x, sem::closest_on_sphere(frame::vec3(x, 0), frame::vec3(x, 1), x.in(2)));
+  }
+};
+
+struct closest_on_torus {
+  static OpDef definition() {
+    return {.name = "closest_on_torus", .family = OpFamily::soft_object,
+            .doc = "the point of a torus's surface (around the z axis, as torus) closest to p (1989 furry donut)",
+            .inputs = {in("p", Type::vec3), in("center", Type::vec3, 0.0f), in("major_radius", Type::float_, 1.0f),
+                       in("minor_radius", Type::float_, 0.25f)},
+            .outputs = {out(Type::vec3)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    frame::store_vec3(x, sem::closest_on_torus(frame::vec3(x, 0), frame::vec3(x, 1), x.in(2), x.in(3)));
+  }
+};
+
 SHADETREE_COMPONENTWISE_OP(intersect, 2, soft_intersect, soft_boolean("intersect", "a * b (1989 section 2.2)"))
 SHADETREE_COMPONENTWISE_OP(union_, 2, soft_union, soft_boolean("union", "a + b - a * b (1989 section 2.2)"))
 SHADETREE_COMPONENTWISE_OP(difference, 2, soft_difference,

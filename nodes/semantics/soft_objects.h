@@ -51,6 +51,39 @@ F soft_torus(const Vec3<F>& p, const Vec3<F>& center, F major_radius, F minor_ra
   return soft_ramp(sqrt(ring * ring + dz * dz) - minor_radius, softness);
 }
 
+// The unit vector along d, or `fallback` where d is 0 (or not finite).
+template <class F>
+Vec3<F> direction_or(const Vec3<F>& d, const Vec3<F>& fallback) {
+  F length = sqrt(dot3(d, d));
+  auto usable = both(length > 0.0f, length < 3.0e38f);
+  F inverse = 1.0f / select(usable, length, splat<F>(1.0f));
+  return {select(usable, d.x * inverse, fallback.x), select(usable, d.y * inverse, fallback.y),
+          select(usable, d.z * inverse, fallback.z)};
+}
+
+// The point of a sphere's surface closest to p (for its centre, the top).
+template <class F>
+Vec3<F> closest_on_sphere(const Vec3<F>& p, const Vec3<F>& center, F radius) {
+  Vec3<F> up{splat<F>(0.0f), splat<F>(1.0f), splat<F>(0.0f)};
+  Vec3<F> d = direction_or(Vec3<F>{p.x - center.x, p.y - center.y, p.z - center.z}, up);
+  return {center.x + radius * d.x, center.y + radius * d.y, center.z + radius * d.z};
+}
+
+// The point of a torus's surface (around the z axis through center, as
+// soft_torus) closest to p: the closest point of its core circle, then the
+// tube's surface toward p. On the axis, the core point on +x; on the core
+// circle, the tube's outer equator.
+template <class F>
+Vec3<F> closest_on_torus(const Vec3<F>& p, const Vec3<F>& center, F major_radius, F minor_radius) {
+  F dx = p.x - center.x, dy = p.y - center.y, dz = p.z - center.z;
+  Vec3<F> ring = direction_or(Vec3<F>{dx, dy, splat<F>(0.0f)},
+                              Vec3<F>{splat<F>(1.0f), splat<F>(0.0f), splat<F>(0.0f)});
+  Vec3<F> core{ring.x * major_radius, ring.y * major_radius, splat<F>(0.0f)};
+  Vec3<F> tube = direction_or(Vec3<F>{dx - core.x, dy - core.y, dz}, ring);
+  return {center.x + core.x + minor_radius * tube.x, center.y + core.y + minor_radius * tube.y,
+          center.z + minor_radius * tube.z};
+}
+
 // 1989 section 2.2: algebraic product and sum, which keep fillets smooth.
 template <class F> F soft_intersect(F a, F b) { return a * b; }
 template <class F> F soft_union(F a, F b) { return a + b - a * b; }
