@@ -71,9 +71,9 @@ Result<Scene> surface_scene(const Graph& graph, const RenderArguments& arguments
 Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
                                             const RenderArguments& arguments) {
   const Graph& graph = *loaded.graph;
-  if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
+  if (!arguments.object.empty() || arguments.samples_per_pixel != 1)
     return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                      "--object, --spp and --no-shadows are for surface graphs; this is a volume graph"};
+                      "--object and --spp are for surface graphs; this is a volume graph"};
   if (!graph.render.volume)
     return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                       "a volume graph needs render.volume with \"bounds\" to be rendered (a volume must be bounded)"};
@@ -96,6 +96,7 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
     VolumeRenderOptions options;
     options.threads = arguments.threads;
     options.step = arguments.step.value_or(0.0f);
+    options.shadows = !arguments.no_shadows;
     if (arguments.jitter) options.jitter = true;
     options.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
     options.progress = [&progress](double fraction) { progress.update(fraction); };
@@ -105,9 +106,10 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char text[320];
     std::snprintf(text, sizeof text,
-                  "%dx%d, %ld rays, %ld density samples (%ld for gradients) in %.3f s (thread time: kernel %.3f s "
-                  "= %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
-                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples, seconds,
+                  "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadows) in %.3f s (thread time: "
+                  "kernel %.3f s = %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
+                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
+                  stats.shadow_samples, seconds,
                   stats.kernel_seconds,
                   stats.kernel_seconds > 0 ? static_cast<double>(stats.density_samples) / stats.kernel_seconds / 1e6
                                            : 0.0,
@@ -295,7 +297,7 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--spp", arguments->samples_per_pixel,
                       "surface graphs: jittered samples per pixel (default 1: the pixel centre)")
       ->check(CLI::Range(1, 256));
-  command->add_flag("--no-shadows", arguments->no_shadows, "surface graphs: no shadow rays");
+  command->add_flag("--no-shadows", arguments->no_shadows, "surface and volume graphs: no shadow rays");
   command->add_option("--object", arguments->object,
                       "surface graphs: render on a preview object: sphere, torus, plane, box or a mesh file "
                       "(.obj, .ply) instead of the graph's scene");

@@ -23,7 +23,8 @@ glm::vec3 direction_to_light(const Light& light, const glm::vec3& point, float* 
   return *distance > 0.0f ? offset / *distance : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows) {
+glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
+                      const float* light_transmittance) {
   glm::vec3 result = glm::vec3(scene.desc().ambient[0], scene.desc().ambient[1], scene.desc().ambient[2]) *
                          material.color +
                      material.emission;
@@ -32,7 +33,8 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
   // Shadow rays start off the surface by an amount that scales with the
   // point's distance from the origin (float spacing grows with it).
   const float offset = 1e-4f * (1.0f + glm::length(point.point));
-  for (const Light& light : scene.lights()) {
+  for (std::size_t index = 0; index < scene.lights().size(); ++index) {
+    const Light& light = scene.lights()[index];
     float distance = 0.0f;
     const glm::vec3 l = direction_to_light(light, point.point, &distance);
     const float diffuse = glm::dot(n, l);
@@ -45,7 +47,7 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
       const glm::vec3 half = glm::normalize(l + point.to_viewer);
       term += material.specular * std::pow(std::max(0.0f, glm::dot(n, half)), exponent);
     }
-    result += light.radiance * term;
+    result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * term;
   }
   return result;
 }

@@ -32,8 +32,11 @@ float specular_exponent(float roughness);
 
 // ambient * color + emission + the sum over lights of
 // radiance * (color * max(0, N.L) + specular * max(0, N.H)^exponent),
-// each light's term dropped where a shadow ray finds an object first.
-glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows);
+// each light's term dropped where a shadow ray finds an object first, and
+// multiplied by light_transmittance[i] where given (the fraction of light
+// i that reaches the point through a volume).
+glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
+                      const float* light_transmittance = nullptr);
 
 // Unit direction from `point` toward `light`, and the distance to it
 // (infinite for directional lights).

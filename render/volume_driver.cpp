@@ -63,13 +63,38 @@ struct Batch {
 
 // Statistics of one thread's tiles, added to the totals once per tile.
 struct TileCounts {
-  long rays = 0, density_samples = 0, gradient_samples = 0, kernel_calls = 0, lane_slots = 0;
+  long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, kernel_calls = 0, lane_slots = 0;
+};
+
+// A ray from a shaded sample toward a light, through the volume.
+struct ShadowRay {
+  glm::vec3 origin{0.0f}, direction{0.0f};
+  float t = 0.0f, end = 0.0f;  // the next segment's start; where the ray leaves the box or meets the light
+  float transmittance = 1.0f;
+  std::size_t slot = 0;  // in the step's transmittance list
+};
+
+// What one tile's march works in: the batches of its kernel calls (march
+// samples, gradient probes, shadow samples), its kernel binding and its
+// statistics.
+struct TileScratch {
+  TileScratch(std::size_t packet, std::size_t lights, const Kernel& kernel, float step, BoundKernel& bound,
+              std::atomic<long long>& kernel_ns)
+      : samples(packet, kernel, step),
+        probes(2 * packet, kernel, step),
+        shadows(packet * std::max<std::size_t>(lights, 1), kernel, step),
+        bound(bound),
+        kernel_ns(kernel_ns) {}
+  Batch samples, probes, shadows;
+  BoundKernel& bound;
+  std::atomic<long long>& kernel_ns;
+  TileCounts counts;
 };
 
 class Marcher {
  public:
   Marcher(const Kernel& kernel, const Scene& scene, const VolumeDesc& volume, float step, float reference_step,
-          bool jitter, const VolumeRenderOptions& options)
+          bool jitter, bool shadows, const VolumeRenderOptions& options)
       : kernel_(kernel),
         layout_(kernel.outputs()),
         scene_(scene),
@@ -79,12 +104,14 @@ class Marcher {
         reference_step_(reference_step),
         jitter_(jitter),
         lit_(scene.desc().lighting == Lighting::lit),
+        shadows_(lit_ && shadows && !scene.lights().empty()),
         options_(options),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
   // The tile's pixels, RGB, row after row.
   void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, std::vector<glm::vec3>& pixels,
                    TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+    const std::size_t lights = scene_.lights().size();
     pixels.assign(static_cast<std::size_t>(tile.width) * tile.height, background_);
     std::vector<MarchingRay> rays;
     for (int y = 0; y < tile.height; ++y)
@@ -104,30 +131,35 @@ class Marcher {
         marching.segment = lit_ ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
-    const std::size_t packet = options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : rays.size();
     if (rays.empty()) return;
-    Batch samples(std::min(packet, rays.size()), kernel_, step_);
-    Batch probes(2 * std::min(packet, rays.size()), kernel_, step_);
+    const std::size_t packet = std::min(
+        rays.size(), options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : rays.size());
+    TileScratch scratch(packet, lights, kernel_, step_, bound, kernel_ns);
     for (std::size_t first = 0; first < rays.size(); first += packet) {
       const std::size_t last = std::min(rays.size(), first + packet);
       std::vector<MarchingRay*> live;
       for (std::size_t i = first; i < last; ++i) live.push_back(&rays[i]);
-      while (!live.empty()) march_once(live, samples, probes, bound, counts, kernel_ns);
+      while (!live.empty()) march_once(live, scratch);
       for (std::size_t i = first; i < last; ++i)
         pixels[static_cast<std::size_t>(rays[i].pixel)] = rays[i].color + (1.0f - rays[i].alpha) * background_;
     }
+    const TileCounts& marched = scratch.counts;
+    counts.density_samples += marched.density_samples;
+    counts.gradient_samples += marched.gradient_samples;
+    counts.shadow_samples += marched.shadow_samples;
+    counts.kernel_calls += marched.kernel_calls;
+    counts.lane_slots += marched.lane_slots;
   }
 
  private:
-  void run(BoundKernel& bound, Batch& batch, std::size_t count, TileCounts& counts,
-           std::atomic<long long>& kernel_ns) const {
-    StageClock clock(kernel_ns);
-    bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
-    counts.density_samples += static_cast<long>(count);
-    counts.kernel_calls += 1;
+  void run(Batch& batch, std::size_t count, TileScratch& scratch) const {
+    StageClock clock(scratch.kernel_ns);
+    scratch.bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
+    scratch.counts.density_samples += static_cast<long>(count);
+    scratch.counts.kernel_calls += 1;
     if (options_.lane_width > 0) {
       const std::size_t width = static_cast<std::size_t>(options_.lane_width);
-      counts.lane_slots += static_cast<long>((count + width - 1) / width * width);
+      scratch.counts.lane_slots += static_cast<long>((count + width - 1) / width * width);
     }
   }
 
@@ -135,17 +167,91 @@ class Marcher {
     return batch.outputs.plane(layout_.plane(id))[i];
   }
 
+  // The graph's opacity (default: its density), in [0, 1].
+  float opacity(const Batch& batch, std::size_t i) const {
+    return std::clamp(output(batch, layout_.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density, i),
+                      0.0f, 1.0f);
+  }
+
+  // 1989: alpha_k = 1 - (1 - opacity)^(length / reference step).
+  float segment_alpha(float opacity, float length) const {
+    return opacity >= 1.0f ? 1.0f : 1.0f - std::pow(1.0f - opacity, length / reference_step_);
+  }
+
+  // Gilet & Dischler 2010's "Phong with shadows": from each shaded sample a
+  // secondary march toward each light, at twice the step, multiplying the light's
+  // transmittance by 1 - alpha of every segment, until the ray leaves the
+  // box, reaches the light or lets through less than the termination.
+  void march_shadows(std::vector<ShadowRay>& rays, std::vector<float>& transmittance, TileScratch& scratch) const {
+    const float shadow_step = 2.0f * step_;
+    std::vector<ShadowRay*> live;
+    for (ShadowRay& ray : rays)
+      if (ray.t < ray.end) live.push_back(&ray);
+    while (!live.empty()) {
+      const std::size_t count = live.size();
+      for (std::size_t i = 0; i < count; ++i) {
+        const ShadowRay& ray = *live[i];
+        const float length = std::min(shadow_step, ray.end - ray.t);
+        store3(scratch.shadows.inputs, GlobalId::P, i, ray.origin + (ray.t + 0.5f * length) * ray.direction);
+        store3(scratch.shadows.inputs, GlobalId::I, i, ray.direction);
+      }
+      run(scratch.shadows, count, scratch);
+      scratch.counts.shadow_samples += static_cast<long>(count);
+      for (std::size_t i = 0; i < count; ++i) {
+        ShadowRay& ray = *live[i];
+        ray.transmittance *= 1.0f - segment_alpha(opacity(scratch.shadows, i), std::min(shadow_step, ray.end - ray.t));
+        ray.t += shadow_step;
+      }
+      live.erase(std::remove_if(live.begin(), live.end(),
+                                [&](const ShadowRay* ray) {
+                                  return ray->t >= ray->end || ray->transmittance < options_.termination;
+                                }),
+                 live.end());
+    }
+    for (const ShadowRay& ray : rays) transmittance[ray.slot] = ray.transmittance < options_.termination ? 0.0f : ray.transmittance;
+  }
+
+  // The transmittance toward each light of the samples of this step that
+  // will be shaded (lights() per sample, 1 where not shadowed). Shadow rays
+  // start two reference steps out along the normal, clear of the sample
+  // itself, by a distance that does not change with the march step.
+  std::vector<float> light_transmittance(const std::vector<MarchingRay*>& live, const std::vector<glm::vec3>& normals,
+                                         TileScratch& scratch) const {
+    const std::size_t lights = scene_.lights().size();
+    std::vector<float> transmittance(live.size() * lights, 1.0f);
+    if (!shadows_) return transmittance;
+    std::vector<ShadowRay> rays;
+    for (std::size_t i = 0; i < live.size(); ++i) {
+      const MarchingRay& ray = *live[i];
+      if (ray.segment < 0 || opacity(scratch.samples, i) <= 0.0f) continue;
+      const glm::vec3 x = ray.at(ray.sample_t()) + 2.0f * reference_step_ * normals[i];
+      for (std::size_t l = 0; l < lights; ++l) {
+        ShadowRay& shadow = rays.emplace_back();
+        float distance = 0.0f;
+        shadow.origin = x;
+        shadow.direction = direction_to_light(scene_.lights()[l], x, &distance);
+        const std::optional<Span> span = clip_to_box(Ray{x, shadow.direction}, lo_, hi_);
+        shadow.t = std::max(span ? span->near : 0.0f, 0.0f);
+        shadow.end = span ? std::min(span->far, distance) : 0.0f;
+        shadow.slot = i * lights + l;
+      }
+    }
+    march_shadows(rays, transmittance, scratch);
+    return transmittance;
+  }
+
   // Every live ray takes its next sample; rays that leave the volume or
   // become opaque are dropped.
-  void march_once(std::vector<MarchingRay*>& live, Batch& samples, Batch& probes, BoundKernel& bound,
-                  TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+  void march_once(std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+    Batch& samples = scratch.samples;
+    Batch& probes = scratch.probes;
     const std::size_t count = live.size();
     for (std::size_t i = 0; i < count; ++i) {
       const MarchingRay& ray = *live[i];
       store3(samples.inputs, GlobalId::P, i, ray.at(ray.sample_t()));
       store3(samples.inputs, GlobalId::I, i, ray.frame.along);
     }
-    run(bound, samples, count, counts, kernel_ns);
+    run(samples, count, scratch);
 
     // 1989 section 3.1: where 0 < density < 1, the gradient from the
     // previous sample along the ray and two probes off it
@@ -165,50 +271,52 @@ class Marcher {
         store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
       }
       if (!soft.empty()) {
-        run(bound, probes, 2 * soft.size(), counts, kernel_ns);
-        counts.gradient_samples += static_cast<long>(2 * soft.size());
+        run(probes, 2 * soft.size(), scratch);
+        scratch.counts.gradient_samples += static_cast<long>(2 * soft.size());
       }
     }
 
-    std::size_t next_soft = 0;
+    // The outward normal, -gradient normalized, where it was probed;
+    // elsewhere the normal faces the viewer.
+    std::vector<glm::vec3> normals;
+    if (lit_) {
+      normals.resize(count);
+      for (std::size_t i = 0; i < count; ++i) normals[i] = -live[i]->frame.along;
+      for (std::size_t k = 0; k < soft.size(); ++k) {
+        const MarchingRay& ray = *live[soft[k]];
+        const float t = ray.sample_t();
+        const glm::vec3 gradient = density_gradient(
+            ray.frame, GradientSamples{output(samples, OutputId::density, soft[k]), ray.previous_density,
+                                       std::max(t - ray.previous_t, 1e-30f), output(probes, OutputId::density, 2 * k),
+                                       output(probes, OutputId::density, 2 * k + 1), step_});
+        const float length = glm::length(gradient);
+        if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = -gradient / length;
+      }
+    }
+    const std::vector<float> transmittance = light_transmittance(live, normals, scratch);
+
     for (std::size_t i = 0; i < count; ++i) {
       MarchingRay& ray = *live[i];
       const float t = ray.sample_t();
       const float density = output(samples, OutputId::density, i);
-      const bool probed = next_soft < soft.size() && soft[next_soft] == i;
-      if (probed) ++next_soft;
-      const float opacity = std::clamp(
-          layout_.provides(OutputId::opacity) ? output(samples, OutputId::opacity, i) : density, 0.0f, 1.0f);
+      const float sample_opacity = opacity(samples, i);
       // Empty space (most samples) adds nothing: no shading, no pow.
-      if (ray.segment >= 0 && opacity > 0.0f) {
+      if (ray.segment >= 0 && sample_opacity > 0.0f) {
         glm::vec3 color(1.0f);
         if (layout_.provides(OutputId::color))
           for (int c = 0; c < 3; ++c) color[c] = samples.outputs.plane(layout_.plane(OutputId::color, c))[i];
         if (lit_) {
-          // Density rises inward: the outward normal is -gradient.
-          glm::vec3 normal = -ray.frame.along;
-          if (probed) {
-            const std::size_t k = next_soft - 1;
-            const glm::vec3 gradient = density_gradient(
-                ray.frame, GradientSamples{density, ray.previous_density, std::max(t - ray.previous_t, 1e-30f),
-                                           output(probes, OutputId::density, 2 * k),
-                                           output(probes, OutputId::density, 2 * k + 1), step_});
-            const float length = glm::length(gradient);
-            if (length > 0.0f && std::isfinite(length)) normal = -gradient / length;
-          }
           SurfaceMaterial material;
           material.color = color;
           LitPoint point;
           point.point = ray.at(t);
-          point.shading_normal = normal;
-          point.geometric_normal = normal;
+          point.shading_normal = normals[i];
+          point.geometric_normal = normals[i];
           point.to_viewer = -ray.frame.along;
-          color = light_point(scene_, material, point, false);
+          color = light_point(scene_, material, point, false, transmittance.data() + i * scene_.lights().size());
         }
-        // alpha_k = 1 - (1 - opacity)^(length / reference step), then
-        // front to back: t = alpha_k (1 - alpha); color += t color_k.
-        const float alpha = opacity >= 1.0f ? 1.0f
-                                            : 1.0f - std::pow(1.0f - opacity, ray.segment_length() / reference_step_);
+        // Front to back: t = alpha_k (1 - alpha); color += t color_k.
+        const float alpha = segment_alpha(sample_opacity, ray.segment_length());
         if (std::isfinite(color.x + color.y + color.z)) {
           const float weight = alpha * (1.0f - ray.alpha);
           ray.color += weight * color;
@@ -231,7 +339,7 @@ class Marcher {
   const Scene& scene_;
   glm::vec3 lo_, hi_;
   float step_, reference_step_;
-  bool jitter_, lit_;
+  bool jitter_, lit_, shadows_;
   const VolumeRenderOptions& options_;
   glm::vec3 background_;
 };
@@ -262,7 +370,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   const float step = options.step != 0.0f ? options.step : march_step(volume);
   if (std::string problem = step_problem(volume, step); !problem.empty()) return invalid_input(problem);
   const bool jitter = options.jitter.value_or(volume.jitter);
-  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), jitter, options);
+  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), jitter,
+                        options.shadows && scene.desc().shadows, options);
 
   Image image;
   image.width = view.width;
@@ -271,7 +380,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
   ThreadBindings bindings(kernel, params.data(), volume_uniforms(view.frame, step));
   std::atomic<long long> tile_ns{0}, kernel_ns{0};
-  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, kernel_calls{0}, lane_slots{0};
+  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, kernel_calls{0}, lane_slots{0};
 
   for_each_tile(
       view.width, view.height, tile_size, options.threads,
@@ -290,6 +399,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         rays += counts.rays;
         density_samples += counts.density_samples;
         gradient_samples += counts.gradient_samples;
+        shadow_samples += counts.shadow_samples;
         kernel_calls += counts.kernel_calls;
         lane_slots += counts.lane_slots;
       },
@@ -301,6 +411,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     stats->rays = rays;
     stats->density_samples = density_samples;
     stats->gradient_samples = gradient_samples;
+    stats->shadow_samples = shadow_samples;
     stats->kernel_calls = kernel_calls;
     stats->lane_slots = lane_slots;
   }

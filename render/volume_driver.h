@@ -39,6 +39,7 @@ struct VolumeRenderOptions {
   float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step); others are checked
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
+  bool shadows = true;  // and the scene's "shadows": a secondary march toward each light
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
   std::function<void(double fraction_done)> progress;  // may be empty
@@ -51,7 +52,8 @@ struct VolumeRenderStats {
   double kernel_seconds = 0;  // the graph
   long rays = 0;              // that met the volume
   long density_samples = 0;   // graph evaluations: march samples and gradient probes
-  long gradient_samples = 0;  // of those, the probes
+  long gradient_samples = 0;  // of those, the gradient probes
+  long shadow_samples = 0;    // and the samples of shadow rays
   long kernel_calls = 0;
   long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)
 

@@ -153,6 +153,34 @@ TEST(VolumeDriver, PacketsAndThreadCountsChangeNoPixel) {
   EXPECT_LE(stats.lane_utilisation(), 1.0);
 }
 
+// Shadow rays only take light away: every pixel is at most as bright as
+// without them, and the lumpy sphere's far side from the light (lit at a
+// grazing angle through its own bumps) is markedly darker.
+TEST(VolumeDriver, ShadowsOnlyDarken) {
+  const LoadedGraph loaded = compile_volume(R"({"id": "p", "op": "P"}, {"id": "p4", "op": "mul", "in": {"a": "p", "b": 4}},
+      {"id": "n", "op": "noise", "in": {"p": "p4"}}, {"id": "bump", "op": "mul", "in": {"a": "n", "b": 0.3}},
+      {"id": "r", "op": "add", "in": {"a": 0.6, "b": "bump"}},
+      {"id": "s", "op": "sphere", "in": {"p": "p", "radius": "r", "softness": 0.1}})",
+                                            R"("density": "s")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {1.0f, 0.0f, -0.3f};  // from the left, grazing
+  VolumeRenderOptions unshadowed;
+  unshadowed.shadows = false;
+  VolumeRenderStats stats;
+  const Image shadowed = render(*kernel, loaded, desc, unit_box(0.01f), 40, {}, &stats);
+  const Image plain = render(*kernel, loaded, desc, unit_box(0.01f), 40, unshadowed);
+  float darkest = 0.0f;
+  for (std::size_t i = 0; i < plain.pixels.size(); ++i) {
+    EXPECT_LE(shadowed.pixels[i], plain.pixels[i] + 1e-6f) << i;
+    darkest = std::max(darkest, plain.pixels[i] - shadowed.pixels[i]);
+  }
+  EXPECT_GT(darkest, 0.2f);
+  EXPECT_GT(stats.shadow_samples, 0);
+  desc.shadows = false;
+  EXPECT_EQ(render(*kernel, loaded, desc, unit_box(0.01f), 40).pixels, plain.pixels);
+}
+
 TEST(VolumeDriver, StepAndFrameReachTheGraph) {
   const LoadedGraph loaded =
       compile_volume(R"({"id": "st", "op": "step_size"}, {"id": "f", "op": "frame"}, {"id": "fw", "op": "filter_width"},
