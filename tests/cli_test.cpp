@@ -14,6 +14,7 @@
 #include "graph/graph.h"
 #include "nodes/registry.h"
 #include "render/image_output.h"
+#include "render/vdb_file.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
@@ -254,6 +255,26 @@ TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
   }
   EXPECT_EQ(shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --step 0.1").status, 2);
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, VoxelizeWritesAVdbFileOrExitsWithTwo) {
+  const std::string out = (directory_ / "sphere.vdb").string();
+  const CommandResult run = shadetree("voxelize " + gallery + "noisy_sphere.json -o " + out + " --res 16");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("16x16x16 voxels"), std::string::npos) << run.err;
+  Result<VoxelGrid> grid = read_vdb(out);
+  ASSERT_TRUE(grid.ok()) << grid.error().to_string();
+  EXPECT_GT(*std::max_element(grid->density.begin(), grid->density.end()), 0.9f);
+  fs::remove(out);
+  for (const std::string& arguments : {gallery + "marble.json -o " + out, gallery + "noisy_sphere.json -o " +
+                                       (directory_ / "sphere.png").string(),
+                                       gallery + "noisy_sphere.json -o " + out + " --res 0",
+                                       gallery + "noisy_sphere.json -o " + out + " --res 100000"}) {
+    const CommandResult bad = shadetree("voxelize " + arguments);
+    EXPECT_EQ(bad.status, 2) << arguments << ": " << bad.err;
+    EXPECT_EQ(line_count(bad.err), 1) << bad.err;
+  }
+  EXPECT_EQ(files(), std::vector<std::string>{});
 }
 
 TEST_F(Cli, RenderWritesTheImageAndASummary) {

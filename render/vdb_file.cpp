@@ -1,0 +1,60 @@
+#include "render/vdb_file.h"
+
+#include "render/loadable_module.h"
+#include "render/output_file.h"
+
+namespace shadetree {
+namespace {
+
+// The OpenVDB module (render/vdb_module.cpp), loaded on first use.
+struct VdbModule {
+  LoadableModule module{"libshadetree_vdb.so", "OpenVDB support"};
+  int (*write)(const char*, const int*, const float*, float, const float*, const float*, char*, std::size_t) =
+      module.function<int(const char*, const int*, const float*, float, const float*, const float*, char*,
+                          std::size_t)>("shadetree_vdb_write");
+  int (*read)(const char*, int*, float*, float*, float**, float**, char*, std::size_t) =
+      module.function<int(const char*, int*, float*, float*, float**, float**, char*, std::size_t)>(
+          "shadetree_vdb_read");
+  void (*release)(float*) = module.function<void(float*)>("shadetree_vdb_free");
+  const std::string& error = module.error();
+};
+
+const VdbModule& vdb_module() {
+  static VdbModule module;
+  return module;
+}
+
+}  // namespace
+
+Status write_vdb(const VoxelGrid& grid, const std::string& path) {
+  const VdbModule& module = vdb_module();
+  if (!module.error.empty()) return failure(module.error);
+  return write_then_rename(path, [&](const std::string& temporary) {
+    char reason[512] = "";
+    return module.write(temporary.c_str(), grid.size.data(), grid.origin.data(), grid.voxel_size,
+                        grid.density.data(), grid.color.empty() ? nullptr : grid.color.data(), reason,
+                        sizeof reason) != 0
+               ? "cannot write the VDB file: " + std::string(reason)
+               : std::string();
+  });
+}
+
+Result<VoxelGrid> read_vdb(const std::string& path) {
+  const VdbModule& module = vdb_module();
+  if (!module.error.empty()) return failure(module.error);
+  VoxelGrid grid;
+  float* density = nullptr;
+  float* color = nullptr;
+  char reason[512] = "";
+  if (module.read(path.c_str(), grid.size.data(), grid.origin.data(), &grid.voxel_size, &density, &color, reason,
+                  sizeof reason) != 0)
+    return failure("\"" + path + "\": cannot read the VDB file: " + reason);
+  const std::size_t count = static_cast<std::size_t>(grid.size[0]) * grid.size[1] * grid.size[2];
+  grid.density.assign(density, density + count);
+  if (color) grid.color.assign(color, color + 3 * count);
+  module.release(density);
+  module.release(color);
+  return grid;
+}
+
+}  // namespace shadetree
