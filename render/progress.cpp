@@ -22,7 +22,10 @@ void ProgressReporter::update(double fraction_done) {
   if (percent == last_percent_) return;
   last_percent_ = percent;
   shown_ = true;
-  std::fprintf(stderr, "\r%s %3d%%", label_.c_str(), percent);
+  // The time left if the rest goes as fast as what is done.
+  const double seconds = std::chrono::duration<double>(elapsed).count();
+  const double left = fraction_done > 0.0 ? seconds * (1.0 - fraction_done) / fraction_done : 0.0;
+  std::fprintf(stderr, "\r%s %3d%%, %.0f s elapsed, about %.0f s left\033[K", label_.c_str(), percent, seconds, left);
   std::fflush(stderr);
 }
 

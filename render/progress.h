@@ -1,5 +1,6 @@
-// Progress on stderr for long renders: shown only when stderr is a
-// terminal and the render has run for more than a second.
+// Progress on stderr for long renders: the share done, the time spent and
+// an estimate of the time left, shown only when stderr is a terminal and
+// the render has run for more than a second.
 #pragma once
 
 #include <chrono>

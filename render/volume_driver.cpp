@@ -18,6 +18,9 @@ namespace shadetree {
 namespace {
 
 constexpr int tile_size = 32;
+// Samples fainter than this (opacity per reference step times the ray's
+// remaining transmittance) send no shadow rays.
+constexpr float shadow_weight_cutoff = 1.0f / 64.0f;
 
 // One ray through the volume. Segment k covers t in [entry + k step,
 // min(entry + (k + 1) step, exit)]; its sample lies `jitter` of the way
@@ -34,6 +37,7 @@ struct MarchingRay {
   float jitter = 0.5f;
   int segment = 0;  // the next one; -1: the probe before the entry, for the first gradient
   float previous_t = 0.0f, previous_density = 0.0f;
+  float ior = 1.0f;  // the refractive index the ray is travelling through
   glm::vec3 color{0.0f};
   float alpha = 0.0f;
 
@@ -105,6 +109,7 @@ class Marcher {
         jitter_(jitter),
         lit_(scene.desc().lighting == Lighting::lit),
         shadows_(lit_ && shadows && !scene.lights().empty()),
+        refracts_(kernel.outputs().provides(OutputId::ior)),
         options_(options),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
@@ -128,7 +133,7 @@ class Marcher {
         marching.exit = span->far;
         marching.step_length = step_;
         if (jitter_) marching.jitter = unit_float(pixel_hash(column, row, 0));
-        marching.segment = lit_ ? -1 : 0;
+        marching.segment = needs_gradients() ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
     if (rays.empty()) return;
@@ -152,6 +157,38 @@ class Marcher {
   }
 
  private:
+  // Gradients serve the lighting and the refraction.
+  bool needs_gradients() const { return lit_ || refracts_; }
+
+  // 1989 blue glass: where the refractive index of a sample differs from
+  // the one the ray travels in, the ray bends by Snell's law about the
+  // density gradient (or reflects, past the critical angle) and marches on
+  // from the sample in its new direction, through the rest of the box.
+  void refract(MarchingRay& ray, float t, const glm::vec3& outward, float ior) const {
+    const glm::vec3 d = ray.frame.along;
+    glm::vec3 n = outward;
+    float cosine = -glm::dot(n, d);
+    if (cosine < 0.0f) {
+      n = -n;
+      cosine = -cosine;
+    }
+    const float eta = ray.ior / ior;
+    const float k = 1.0f - eta * eta * (1.0f - cosine * cosine);
+    const glm::vec3 bent = k < 0.0f ? d + 2.0f * cosine * n : eta * d + (eta * cosine - std::sqrt(k)) * n;
+    const float length = glm::length(bent);
+    ray.ior = ior;
+    if (!(length > 0.0f) || !std::isfinite(length)) return;
+    const glm::vec3 origin = ray.at(t);
+    const std::optional<Span> span = clip_to_box(Ray{origin, bent / length}, lo_, hi_);
+    if (!span) return;
+    ray.origin = origin;
+    ray.frame = ray_frame(bent / length);
+    ray.entry = 0.0f;
+    ray.exit = std::max(span->far, 0.0f);
+    // A probe just behind, for the next gradient, then segments from here.
+    ray.segment = -1;
+  }
+
   void run(Batch& batch, std::size_t count, TileScratch& scratch) const {
     StageClock clock(scratch.kernel_ns);
     scratch.bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
@@ -179,11 +216,12 @@ class Marcher {
   }
 
   // Gilet & Dischler 2010's "Phong with shadows": from each shaded sample a
-  // secondary march toward each light, at twice the step, multiplying the light's
+  // secondary march toward each light, at the reference step (so that the
+  // shadows do not change with the march step), multiplying the light's
   // transmittance by 1 - alpha of every segment, until the ray leaves the
   // box, reaches the light or lets through less than the termination.
   void march_shadows(std::vector<ShadowRay>& rays, std::vector<float>& transmittance, TileScratch& scratch) const {
-    const float shadow_step = 2.0f * step_;
+    const float shadow_step = reference_step_;
     std::vector<ShadowRay*> live;
     for (ShadowRay& ray : rays)
       if (ray.t < ray.end) live.push_back(&ray);
@@ -223,7 +261,12 @@ class Marcher {
     std::vector<ShadowRay> rays;
     for (std::size_t i = 0; i < live.size(); ++i) {
       const MarchingRay& ray = *live[i];
-      if (ray.segment < 0 || opacity(scratch.samples, i) <= 0.0f) continue;
+      if (ray.segment < 0) continue;
+      // A faint sample (its opacity per reference step, times what the ray
+      // still lets through) is lit unshadowed: in a faint medium (glass,
+      // thin smoke) every sample would otherwise send rays through all of
+      // it. Per reference step, so that the choice does not follow the step.
+      if (opacity(scratch.samples, i) * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
       const glm::vec3 x = ray.at(ray.sample_t()) + 2.0f * reference_step_ * normals[i];
       for (std::size_t l = 0; l < lights; ++l) {
         ShadowRay& shadow = rays.emplace_back();
@@ -257,7 +300,7 @@ class Marcher {
     // previous sample along the ray and two probes off it
     // (render/density_gradient.h).
     std::vector<std::size_t> soft;
-    if (lit_) {
+    if (needs_gradients()) {
       for (std::size_t i = 0; i < count; ++i) {
         const float density = output(samples, OutputId::density, i);
         if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f) soft.push_back(i);
@@ -279,7 +322,7 @@ class Marcher {
     // The outward normal, -gradient normalized, where it was probed;
     // elsewhere the normal faces the viewer.
     std::vector<glm::vec3> normals;
-    if (lit_) {
+    if (needs_gradients()) {
       normals.resize(count);
       for (std::size_t i = 0; i < count; ++i) normals[i] = -live[i]->frame.along;
       for (std::size_t k = 0; k < soft.size(); ++k) {
@@ -326,6 +369,10 @@ class Marcher {
       ray.previous_t = t;
       ray.previous_density = density;
       ++ray.segment;
+      if (refracts_ && ray.segment > 0) {
+        const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
+        if (std::fabs(ior - ray.ior) > 1e-4f) refract(ray, t, normals[i], ior);
+      }
     }
     live.erase(std::remove_if(live.begin(), live.end(),
                               [&](const MarchingRay* ray) {
@@ -339,7 +386,7 @@ class Marcher {
   const Scene& scene_;
   glm::vec3 lo_, hi_;
   float step_, reference_step_;
-  bool jitter_, lit_, shadows_;
+  bool jitter_, lit_, shadows_, refracts_;
   const VolumeRenderOptions& options_;
   glm::vec3 background_;
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "graph/parse_volume.h"
 #include "interp/interpreter.h"
@@ -108,13 +109,18 @@ const char* const soft_sphere = R"({"id": "p", "op": "P"},
 
 // Halving the step changes a soft sphere's picture by little: opacity is
 // normalized by the step, and only the sampling of the density changes.
+// Shadows add the samples that cross the cutoff for shadow rays.
 TEST(VolumeDriver, HalvingTheStepChangesLittle) {
   const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "thin", "color": "tint")");
   auto kernel = make_interpreted_kernel(loaded.ir);
-  for (Lighting lighting : {Lighting::none, Lighting::lit}) {
-    const Image coarse = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.02f), 40);
-    const Image fine = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.01f), 40);
-    EXPECT_LT(largest_difference(coarse, fine), 0.01f) << (lighting == Lighting::lit ? "lit" : "unlit");
+  VolumeRenderOptions unshadowed;
+  unshadowed.shadows = false;
+  for (const auto& [lighting, options, tolerance] :
+       {std::tuple{Lighting::none, VolumeRenderOptions{}, 0.01f}, std::tuple{Lighting::lit, unshadowed, 0.01f},
+        std::tuple{Lighting::lit, VolumeRenderOptions{}, 0.02f}}) {
+    const Image coarse = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.02f), 40, options);
+    const Image fine = render(*kernel, loaded, looking_down_z(lighting), unit_box(0.01f), 40, options);
+    EXPECT_LT(largest_difference(coarse, fine), tolerance) << "tolerance " << tolerance;
     EXPECT_GT(*std::max_element(fine.pixels.begin(), fine.pixels.end()), 0.1f);
   }
 }
@@ -179,6 +185,32 @@ TEST(VolumeDriver, ShadowsOnlyDarken) {
   EXPECT_GT(stats.shadow_samples, 0);
   desc.shadows = false;
   EXPECT_EQ(render(*kernel, loaded, desc, unit_box(0.01f), 40).pixels, plain.pixels);
+}
+
+// A ray entering glass of index 1.5 at 30 degrees bends to asin(sin 30 /
+// 1.5) = 19.47 degrees (Snell's law), which is where it meets a wall 1.9
+// units further down: at x = 1.9 tan(19.47) = 0.672 instead of 1.097. The
+// wall's colour is its x.
+TEST(VolumeDriver, RefractionFollowsSnellsLaw) {
+  const LoadedGraph loaded = compile_volume(R"({"id": "p", "op": "P"}, {"id": "xyz", "op": "split", "in": {"v": "p"}},
+      {"id": "glass", "op": "box", "in": {"p": "p", "center": [0, 0, -1], "half_size": [5, 5, 1.5], "softness": 0.01}},
+      {"id": "wall", "op": "box", "in": {"p": "p", "center": [0, 0, -1.45], "half_size": [5, 5, 0.05], "softness": 0}},
+      {"id": "density", "op": "union", "in": {"a": "glass", "b": "wall"}},
+      {"id": "rise", "op": "mul", "in": {"a": "glass", "b": 0.5}}, {"id": "ior", "op": "add", "in": {"a": 1, "b": "rise"}},
+      {"id": "c", "op": "color", "in": {"r": "xyz.x", "g": 0, "b": 0}})",
+                                            R"("density": "density", "opacity": "wall", "color": "c", "ior": "ior")");
+  const float angle = 30.0f * 3.14159265f / 180.0f;
+  SceneDesc desc = looking_down_z(Lighting::none);
+  desc.camera.position = {-5.0f * std::sin(angle), 0.0f, 0.5f + 5.0f * std::cos(angle)};
+  desc.camera.target = {0.0f, 0.0f, 0.5f};
+  desc.camera.orthographic_height = 0.5f;
+  VolumeDesc volume;
+  volume.bounds_min = {-3.0f, -3.0f, -2.5f};
+  volume.bounds_max = {3.0f, 3.0f, 1.0f};
+  volume.step = 0.002f;
+  const float bent = std::asin(std::sin(angle) / 1.5f);
+  EXPECT_NEAR(centre_red(render(*make_interpreted_kernel(loaded.ir), loaded, desc, volume, 5)), 1.9f * std::tan(bent),
+              0.01f);
 }
 
 TEST(VolumeDriver, StepAndFrameReachTheGraph) {
