@@ -21,7 +21,7 @@
 #include "cli/commands.h"
 #include "graph/parse_volume.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "render/preview_scene.h"
@@ -217,7 +217,7 @@ ExitStatus bench(const BenchArguments& arguments) {
                 "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
   std::vector<std::string> surface_rows, volume_rows;
   for (const std::string& file : arguments.files) {
-    Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_image_reader());
+    Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files());
     if (!loaded) return report(loaded.error());
     auto view = texture_view(*loaded->graph, arguments.size, std::nullopt);
     if (!view) return report(view.error());

@@ -6,7 +6,7 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 
 namespace shadetree {
 
@@ -20,7 +20,7 @@ void add_check_command(CLI::App& app, CommandRunner& run) {
     run = [files, search_paths] {
       ExitStatus worst = ExitStatus::ok;
       for (const std::string& file : *files) {
-        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_image_reader(*search_paths));
+        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files(*search_paths));
         if (!loaded) {
           const ExitStatus status = report(loaded.error());
           if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;

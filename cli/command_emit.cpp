@@ -8,7 +8,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "jit/jit_compiler.h"
 
 namespace shadetree {
@@ -28,7 +28,7 @@ ExitStatus emit(const EmitArguments& arguments) {
     print_each_pass = [](const char* pass, const ShadeIR& ir) {
       std::printf("; after %s: %zu instructions\n%s\n", pass, ir.code.size(), format_shade_ir(ir).c_str());
     };
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass, graph_image_reader(arguments.search_paths));
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   if (arguments.after_each_pass) return ExitStatus::ok;
   if (arguments.graph) {

@@ -8,7 +8,7 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 
@@ -50,7 +50,7 @@ Status apply_input(const std::string& assignment, SampleBuffers& samples, Unifor
 }
 
 ExitStatus evaluate(const EvalArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_image_reader(arguments.search_paths));
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   auto at = parse_floats(arguments.at, 3, "--at");
   if (!at) return report(at.error());

@@ -12,7 +12,7 @@
 #include "cli/commands.h"
 #include "graph/parse_volume.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "pipeline/tiered_kernel.h"
 #include "render/image_output.h"
 #include "render/preview_scene.h"
@@ -218,7 +218,7 @@ std::string frame_path(const std::string& pattern, int frame) {
 }
 
 ExitStatus render(const RenderArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_image_reader(arguments.search_paths));
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   std::vector<std::pair<float, std::string>> frames;  // frame number, output path
   if (arguments.frames.empty()) {

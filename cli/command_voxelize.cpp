@@ -12,7 +12,7 @@
 #include "cli/commands.h"
 #include "pipeline/compile_graph.h"
 #include "pipeline/tiered_kernel.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "render/output_file.h"
 #include "render/progress.h"
 #include "render/vdb_file.h"
@@ -41,7 +41,7 @@ Status check_vdb_path(const std::string& path) {
 
 ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
   Result<LoadedGraph> loaded =
-      load_and_compile(arguments.file, arguments.assignments, {}, graph_image_reader(arguments.search_paths));
+      load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   const Graph& graph = *loaded->graph;
   if (graph.kind != GraphKind::volume)

@@ -63,12 +63,22 @@ std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<floa
   return values;
 }
 
-// Any image file a graph names reads as one small made-up RGB image, so
-// that the `image` op is fuzzed without touching files.
+// Any file a graph names reads as a small made-up one (an RGB image, a
+// distance grid of a sphere), so that the ops that read files are fuzzed
+// without touching the disk.
 Result<Image> made_up_image(const std::string&, const std::string&) {
   Image image{3, 2, 3, {}};
   for (int i = 0; i < 18; ++i) image.pixels.push_back(static_cast<float>(i) / 17.0f);
   return image;
+}
+
+Result<DistanceGrid> made_up_grid(const std::string&, const std::string&, int) {
+  DistanceGrid grid{{4, 4, 4}, {-1.0f, -1.0f, -1.0f}, 0.5f, {}};
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        grid.distance.push_back(std::sqrt(float((i - 1.5) * (i - 1.5) + (j - 1.5) * (j - 1.5) + (k - 1.5) * (k - 1.5))) * 0.5f - 0.6f);
+  return grid;
 }
 
 }  // namespace
@@ -80,7 +90,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const PassObserver verify = [](const char* pass, const ShadeIR& ir) {
     if (std::string problem = verify_shade_ir(ir); !problem.empty()) fault(std::string("after ") + pass + ": " + problem);
   };
-  Result<LoadedGraph> loaded = compile_graph_text(text, "fuzz.json", {}, verify, made_up_image);
+  Result<LoadedGraph> loaded = compile_graph_text(text, "fuzz.json", {}, verify, GraphFiles{made_up_image, made_up_grid});
   if (!loaded) {
     const std::string line = loaded.error().to_string();
     if (line.find('\n') != std::string::npos || line.find('\0') != std::string::npos) fault("diagnostic of several lines");

@@ -36,7 +36,7 @@ struct Callee {
 
 class Checker {
  public:
-  Checker(const Graph& graph, const ImageReader& read_image) : graph_(graph), read_image_(read_image) {}
+  Checker(const Graph& graph, const GraphFiles& files) : graph_(graph), files_(files) {}
 
   CheckedGraph run(std::shared_ptr<const Graph> graph) {
     for (std::size_t i = 0; i < graph_.params.size(); ++i) check_param_declaration(graph_.params[i]);
@@ -387,14 +387,9 @@ class Checker {
       const AttributeValue* value = find(name);
       if (!value || value->kind != AttributeValue::Kind::text || value->text.empty())
         fail("attribute \"" + name + "\" must be the path of an image file");
-      if (!checker_.read_image_) fail("image files cannot be read here (attribute \"" + name + "\")");
-      Result<Image> read = checker_.read_image_(checker_.graph_.file, value->text);
-      if (!read) {
-        Diagnostic error = read.error();
-        error.file = checker_.graph_.file;
-        error.node = node_.id;
-        throw CheckError{std::move(error)};
-      }
+      if (!checker_.files_.image) fail("image files cannot be read here (attribute \"" + name + "\")");
+      Result<Image> read = checker_.files_.image(checker_.graph_.file, value->text);
+      if (!read) failed_to_read(read.error());
       if (read->width < 1 || read->height < 1 || read->channels < 1 ||
           read->pixels.size() != static_cast<std::size_t>(read->width) * read->height * read->channels)
         fail("image \"" + value->text + "\" has no pixels");
@@ -404,11 +399,29 @@ class Checker {
       image_ = std::move(*read);
       return image_;
     }
+    const DistanceGrid& mesh_distance_grid(const std::string& name, int resolution) const override {
+      const AttributeValue* value = find(name);
+      if (!value || value->kind != AttributeValue::Kind::text || value->text.empty())
+        fail("attribute \"" + name + "\" must be the path of a mesh file (.obj, .ply)");
+      if (!checker_.files_.distance_grid) fail("mesh files cannot be read here (attribute \"" + name + "\")");
+      Result<DistanceGrid> read = checker_.files_.distance_grid(checker_.graph_.file, value->text, resolution);
+      if (!read) failed_to_read(read.error());
+      grid_ = std::move(*read);
+      return grid_;
+    }
 
    private:
+    // A file that could not be read is reported on the node, with the
+    // reader's status.
+    [[noreturn]] void failed_to_read(Diagnostic error) const {
+      error.file = checker_.graph_.file;
+      error.node = node_.id;
+      throw CheckError{std::move(error)};
+    }
     const Checker& checker_;
     const Node& node_;
     mutable Image image_;
+    mutable DistanceGrid grid_;
   };
 
   // Validates attribute names and required attributes, then lays out their
@@ -481,7 +494,7 @@ class Checker {
 
 
   const Graph& graph_;
-  const ImageReader& read_image_;
+  const GraphFiles& files_;
   std::map<std::string, int> function_index_;
   std::vector<CheckedFunction> functions_;
   std::vector<State> function_state_;
@@ -491,9 +504,9 @@ class Checker {
 }  // namespace
 
 
-Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const ImageReader& read_image) {
+Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const GraphFiles& files) {
   try {
-    return Checker(*graph, read_image).run(graph);
+    return Checker(*graph, files).run(graph);
   } catch (const CheckError& error) {
     return error.diagnostic;
   }

@@ -12,6 +12,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "nodes/distance_grid.h"
 #include "nodes/image.h"
 #include "nodes/registry.h"
 
@@ -64,13 +65,22 @@ struct CheckedGraph {
 // Functions calling functions: deeper chains are reported, not recursed into.
 inline constexpr int max_function_nesting = 64;
 
-// Reads the image file `path` names, as written in the graph file
-// `graph_file`, for ops that sample images (render/graph_images.h reads
-// them with OpenImageIO). A graph that names an image and is checked
-// without a reader is an error.
+// The files a graph's ops name, read for the checker (render/graph_files.h
+// reads them with OpenImageIO, Assimp and OpenVDB, below the graph's
+// folder): `path` as written in the graph file `graph_file`. A graph that
+// names a file and is checked without the reader for it is an error.
 using ImageReader = std::function<Result<Image>(const std::string& graph_file, const std::string& path)>;
+// A mesh file as a signed distance grid, `resolution` voxels along the
+// longest side of its bounding box.
+using DistanceGridReader =
+    std::function<Result<DistanceGrid>(const std::string& graph_file, const std::string& path, int resolution)>;
 
-Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const ImageReader& read_image = {});
+struct GraphFiles {
+  ImageReader image;
+  DistanceGridReader distance_grid;
+};
+
+Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const GraphFiles& files = {});
 
 
 // Validates a value given for a param (from --set or an editor) against

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/distance_grid.h"
 #include "nodes/image.h"
 #include "nodes/type.h"
 
@@ -47,6 +48,9 @@ class Attributes {
   // The image file the attribute `name` names, read once per compile (at
   // most max_image_pixels).
   virtual const Image& image_file(const std::string& name) const = 0;
+  // The mesh file the attribute `name` names as a signed distance grid,
+  // `resolution` voxels along its longest side, read once per compile.
+  virtual const DistanceGrid& mesh_distance_grid(const std::string& name, int resolution) const = 0;
 
   // A list of `minimum` to max_table_entries numbers or equally long number
   // arrays (1 to 3 components), appended to `data`; returns the components.

@@ -31,7 +31,8 @@ namespace shadetree {
   X(spline) X(color_table) X(table1d) X(table2d) X(image)                     \
   /* soft objects (nodes/ops/soft_objects.h) */                               \
   X(sphere) X(box) X(torus) X(closest_on_sphere) X(closest_on_torus)        \
-  X(intersect) X(union_) X(difference) X(complement)
+  X(mesh_distance) X(mesh_closest) X(intersect) X(union_) X(difference)      \
+  X(complement)
 
 enum class OpId : std::uint16_t {
 #define SHADETREE_GLOBAL_OP(name, type, variability, kinds, doc) name,

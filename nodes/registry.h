@@ -49,6 +49,7 @@ enum class AttributeKind : unsigned char {
   number_grid,   // a list of equally long lists of numbers (2D tables)
   number_pair,   // [lo, hi]
   image_file,    // the path of an image file, relative to the graph file
+  mesh_file,     // the path of a mesh file, relative to the graph file
 };
 
 struct AttributeSpec {

@@ -32,10 +32,10 @@ PassObserver verified_in_debug_builds(const PassObserver& observe) {
 
 Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path,
                                    const std::vector<std::string>& assignments, const PassObserver& observe,
-                                   const ImageReader& read_image) {
+                                   const GraphFiles& files) {
   if (!parsed) return parsed.error();
   auto graph = std::make_shared<const Graph>(std::move(*parsed));
-  Result<CheckedGraph> checked = check_graph(graph, read_image);
+  Result<CheckedGraph> checked = check_graph(graph, files);
   if (!checked) return checked.error();
   Result<ShadeIR> ir = lower(*checked);
   if (!ir) return ir.error();
@@ -75,14 +75,14 @@ Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path
 }  // namespace
 
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
-                                     const PassObserver& observe, const ImageReader& read_image) {
-  return compile_parsed(load_graph(path), path, assignments, observe, read_image);
+                                     const PassObserver& observe, const GraphFiles& files) {
+  return compile_parsed(load_graph(path), path, assignments, observe, files);
 }
 
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
                                        const std::vector<std::string>& assignments, const PassObserver& observe,
-                                       const ImageReader& read_image) {
-  return compile_parsed(parse_graph(json, file), file, assignments, observe, read_image);
+                                       const GraphFiles& files) {
+  return compile_parsed(parse_graph(json, file), file, assignments, observe, files);
 }
 
 }  // namespace shadetree

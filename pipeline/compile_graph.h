@@ -24,13 +24,13 @@ struct LoadedGraph {
 // `assignments` are NAME=VALUE strings (shadetree's --set). `observe` sees
 // the program after lowering ("lower") and after each optimizer pass; in
 // debug builds every one of those programs is also verified (ir/verify.h).
-// `read_image` reads the image files the graph samples.
+// `files` reads the files (images, meshes) the graph's ops name.
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
-                                     const PassObserver& observe = {}, const ImageReader& read_image = {});
+                                     const PassObserver& observe = {}, const GraphFiles& files = {});
 
 // The same from JSON text; `file` names it in messages.
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
                                        const std::vector<std::string>& assignments = {},
-                                       const PassObserver& observe = {}, const ImageReader& read_image = {});
+                                       const PassObserver& observe = {}, const GraphFiles& files = {});
 
 }  // namespace shadetree

@@ -1,5 +1,10 @@
 #include "render/vdb_file.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+
 #include "render/loadable_module.h"
 #include "render/output_file.h"
 
@@ -16,6 +21,10 @@ struct VdbModule {
       module.function<int(const char*, int*, float*, float*, float**, float**, char*, std::size_t)>(
           "shadetree_vdb_read");
   void (*release)(float*) = module.function<void(float*)>("shadetree_vdb_free");
+  int (*mesh_to_sdf)(const float*, std::size_t, const std::uint32_t*, std::size_t, float, const int*, const float*,
+                     float*, char*, std::size_t) =
+      module.function<int(const float*, std::size_t, const std::uint32_t*, std::size_t, float, const int*,
+                          const float*, float*, char*, std::size_t)>("shadetree_vdb_mesh_to_sdf");
   const std::string& error = module.error();
 };
 
@@ -54,6 +63,33 @@ Result<VoxelGrid> read_vdb(const std::string& path) {
   if (color) grid.color.assign(color, color + 3 * count);
   module.release(density);
   module.release(color);
+  return grid;
+}
+
+Result<DistanceGrid> mesh_distance_grid(const TriangleMesh& mesh, int resolution) {
+  const VdbModule& module = vdb_module();
+  if (!module.error.empty()) return failure(module.error);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 pad = 0.1f * (hi - lo) + glm::vec3(1e-6f);
+  lo -= pad;
+  hi += pad;
+  const float longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  DistanceGrid grid;
+  grid.voxel_size = longest / static_cast<float>(resolution);
+  for (int axis = 0; axis < 3; ++axis) {
+    grid.size[axis] = std::clamp(static_cast<int>(std::ceil((hi[axis] - lo[axis]) / grid.voxel_size)), 1, resolution);
+    grid.origin[axis] = lo[axis];
+  }
+  grid.distance.resize(static_cast<std::size_t>(grid.size[0]) * grid.size[1] * grid.size[2]);
+  char reason[512] = "";
+  if (module.mesh_to_sdf(&mesh.positions[0].x, mesh.positions.size(), mesh.indices.data(), mesh.indices.size() / 3,
+                         grid.voxel_size, grid.size.data(), grid.origin.data(), grid.distance.data(), reason,
+                         sizeof reason) != 0)
+    return failure(std::string("cannot convert the mesh to a distance grid: ") + reason);
   return grid;
 }
 

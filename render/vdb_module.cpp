@@ -7,8 +7,12 @@
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include <openvdb/openvdb.h>
+#include <openvdb/tools/MeshToVolume.h>
 
 namespace {
 
@@ -128,3 +132,40 @@ extern "C" int shadetree_vdb_read(const char* path, int size[3], float origin[3]
 }
 
 extern "C" void shadetree_vdb_free(float* voxels) { std::free(voxels); }
+
+// The signed distance (negative inside) of a closed triangle mesh at the
+// voxel centres of a dense grid, origin + ((i, j, k) + 0.5) * voxel_size,
+// into `distances` ([(k * size[1] + j) * size[0] + i]). The narrow band
+// spans the whole grid, so every voxel has its distance. 0 on success.
+extern "C" int shadetree_vdb_mesh_to_sdf(const float* positions, std::size_t position_count,
+                                         const std::uint32_t* triangles, std::size_t triangle_count, float voxel_size,
+                                         const int size[3], const float origin[3], float* distances, char* error,
+                                         std::size_t error_size) {
+  initialize_openvdb();
+  try {
+    auto transform = grid_transform(origin, voxel_size);
+    std::vector<openvdb::Vec3s> points;
+    points.reserve(position_count);
+    for (std::size_t p = 0; p < position_count; ++p) {
+      const openvdb::Vec3d index = transform->worldToIndex(
+          openvdb::Vec3d(positions[3 * p], positions[3 * p + 1], positions[3 * p + 2]));
+      points.emplace_back(static_cast<float>(index.x()), static_cast<float>(index.y()), static_cast<float>(index.z()));
+    }
+    std::vector<openvdb::Vec3I> faces;
+    faces.reserve(triangle_count);
+    for (std::size_t t = 0; t < triangle_count; ++t)
+      faces.emplace_back(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]);
+    const float band = static_cast<float>(std::max({size[0], size[1], size[2]})) + 1.0f;
+    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> mesh(points, faces);
+    auto sdf = openvdb::tools::meshToVolume<openvdb::FloatGrid>(mesh, *transform, band, band);
+    auto values = sdf->getConstAccessor();
+    for (int k = 0; k < size[2]; ++k)
+      for (int j = 0; j < size[1]; ++j)
+        for (int i = 0; i < size[0]; ++i)
+          distances[voxel_index(size, i, j, k)] = values.getValue(openvdb::Coord(i, j, k));
+    return 0;
+  } catch (const std::exception& exception) {
+    set_error(error, error_size, exception.what());
+    return 1;
+  }
+}

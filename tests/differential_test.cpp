@@ -12,7 +12,7 @@
 
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
-#include "support/test_images.h"
+#include "support/test_files.h"
 #include "interp/interpreter.h"
 #include "ir/verify.h"
 #include "jit/jit_kernel.h"
@@ -119,7 +119,7 @@ Result<LoadedGraph> compile_text(const std::string& text) {
     const std::string problem = verify_shade_ir(ir);
     EXPECT_EQ(problem, "") << "after " << pass << "\n" << format_shade_ir(ir) << "\n" << text;
   };
-  return compile_graph_text(text, "generated.json", {}, verify, testing::test_image_reader());
+  return compile_graph_text(text, "generated.json", {}, verify, testing::test_files());
 }
 
 // --- the gallery -------------------------------------------------------
@@ -186,6 +186,7 @@ std::string attributes_for(OpId op) {
     case OpId::table1d: return R"(, "values": [0, 0.8, 0.2, 1, 0.4], "domain": [-2, 3])";
     case OpId::table2d: return R"(, "values": [[0, 1, 0.5], [0.2, 0.9, 0.1]])";
     case OpId::image: return R"(, "file": "5x3x3.png")";
+    case OpId::mesh_distance: case OpId::mesh_closest: return R"(, "file": "ball.obj", "resolution": 16)";
     case OpId::noise: case OpId::turbulence: return R"(, "seed": 7)";
     default: return "";
   }

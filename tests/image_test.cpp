@@ -12,10 +12,10 @@
 #include "interp/interpreter.h"
 #include "nodes/semantics/splines.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 #include "render/image_output.h"
 #include "support/graph_text.h"
-#include "support/test_images.h"
+#include "support/test_files.h"
 
 namespace shadetree {
 namespace {
@@ -61,12 +61,12 @@ TEST(ImageLookup, NonFiniteCoordinatesStayInsideTheImage) {
 
 // The colour at uv of a texture graph sampling `file`.
 std::vector<float> sample(const std::string& file, float u, float v, const std::string& extra,
-                          const ImageReader& reader = testing::test_image_reader()) {
+                          const GraphFiles& files = testing::test_files()) {
   Result<LoadedGraph> loaded = compile_graph_text(
       testing::graph_text(R"({"id": "uv", "op": "uv"}, {"id": "img", "op": "image", "in": {"uv": "uv"}, "file": ")" +
                               file + "\"" + extra + "}",
                           R"("color": "img")"),
-      "g.json", {}, {}, reader);
+      "g.json", {}, {}, files);
   EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
   if (!loaded) return {};
   float uv[2] = {u, v}, color[3] = {};
@@ -99,12 +99,12 @@ TEST(ImageOp, WrapModeIsAnAttribute) {
 }
 
 // The checker's error for an image graph, as one line.
-std::string error_of(const std::string& node_fields, const ImageReader& reader = testing::test_image_reader()) {
+std::string error_of(const std::string& node_fields, const GraphFiles& files = testing::test_files()) {
   Result<LoadedGraph> loaded = compile_graph_text(
       testing::graph_text(R"({"id": "uv", "op": "uv"}, {"id": "img", "op": "image", "in": {"uv": "uv"})" +
                               node_fields + "}",
                           R"("color": "img")"),
-      "g.json", {}, {}, reader);
+      "g.json", {}, {}, files);
   EXPECT_FALSE(loaded.ok());
   return loaded ? "" : loaded.error().to_string();
 }
@@ -118,7 +118,7 @@ TEST(ImageOp, BadAttributesAreOneLineErrorsOnTheNode) {
   EXPECT_EQ(error_of(R"(, "file": "2048x1024x3.png")"),
             R"(error: g.json: node "img": image "2048x1024x3.png" is 2048x1024; images of up to 1048576 pixels )"
             R"((1024x1024) can be sampled)");
-  EXPECT_EQ(error_of(R"(, "file": "2x2x3.png")", {}),
+  EXPECT_EQ(error_of(R"(, "file": "2x2x3.png")", GraphFiles{}),
             R"(error: g.json: node "img": image files cannot be read here (attribute "file"))");
 }
 
@@ -140,21 +140,22 @@ TEST_F(ImageFiles, ExrPixelsReachTheKernelExactly) {
   Image image{3, 2, 3, {}};
   for (int i = 0; i < 18; ++i) image.pixels.push_back(0.1f * static_cast<float>(i) - 0.4f);
   ASSERT_TRUE(write_image(image, (folder_ / "graphs" / "six.exr").string()).ok());
-  Result<Image> read = graph_image_reader()(graph_file(), "six.exr");
+  Result<Image> read = graph_files().image(graph_file(), "six.exr");
   ASSERT_TRUE(read.ok()) << read.error().to_string();
   EXPECT_EQ(read->pixels, image.pixels);
   // The pixel in column 2 of the top row, at its centre.
   const std::vector<float> expected(image.pixels.begin() + 6, image.pixels.begin() + 9);
-  EXPECT_EQ(sample("six.exr", 5.0f / 6.0f, 0.75f, "", [&](const std::string&, const std::string& path) {
-              return graph_image_reader()(graph_file(), path);
-            }),
-            expected);
+  GraphFiles beside_the_graph;
+  beside_the_graph.image = [&](const std::string&, const std::string& path) {
+    return graph_files().image(graph_file(), path);
+  };
+  EXPECT_EQ(sample("six.exr", 5.0f / 6.0f, 0.75f, "", beside_the_graph), expected);
 }
 
 TEST_F(ImageFiles, MissingBrokenHugeAndEscapingFilesAreInvalidInput) {
   std::ofstream(folder_ / "graphs" / "broken.png") << "not a png";
   std::ofstream(folder_ / "outside.png") << "not a png either";
-  const ImageReader reader = graph_image_reader();
+  const ImageReader reader = graph_files().image;
   for (const char* path : {"missing.png", "broken.png", "../outside.png", "/etc/passwd"}) {
     Result<Image> read = reader(graph_file(), path);
     ASSERT_FALSE(read.ok()) << path;

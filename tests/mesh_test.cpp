@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/mesh.h"
+#include "support/cube_mesh.h"
 
 namespace shadetree {
 namespace {
@@ -33,22 +34,6 @@ class MeshFiles : public ::testing::Test {
   fs::path folder_;
 };
 
-// The cube [-1, 1]^3 as 12 counter-clockwise (seen from outside) triangles.
-const char* cube_obj = R"(v -1 -1 -1
-v 1 -1 -1
-v 1 1 -1
-v -1 1 -1
-v -1 -1 1
-v 1 -1 1
-v 1 1 1
-v -1 1 1
-f 1 4 3 2
-f 5 6 7 8
-f 1 2 6 5
-f 4 8 7 3
-f 1 5 8 4
-f 2 3 7 6
-)";
 
 void expect_error_naming(const Result<TriangleMesh>& mesh, const std::string& path, const std::string& words) {
   ASSERT_FALSE(mesh.ok()) << path;
@@ -59,7 +44,7 @@ void expect_error_naming(const Result<TriangleMesh>& mesh, const std::string& pa
 }
 
 TEST_F(MeshFiles, ObjQuadsBecomeTrianglesWithoutInventedNormals) {
-  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", cube_obj));
+  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", testing::cube_obj(1.0f)));
   ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
   EXPECT_EQ(mesh->indices.size(), 36u);
   EXPECT_TRUE(mesh->normals.empty());
@@ -109,7 +94,7 @@ TEST_F(MeshFiles, BadFilesGiveOneLineErrorsNamingTheFile) {
 }
 
 TEST_F(MeshFiles, CubeHitsFromEachAxisGiveTheClosedFormAndTheOutwardNormal) {
-  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", cube_obj));
+  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", testing::cube_obj(1.0f)));
   ASSERT_TRUE(mesh.ok());
   const MeshIntersector cube(std::move(*mesh));
   for (int axis = 0; axis < 3; ++axis)

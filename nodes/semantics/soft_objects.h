@@ -84,6 +84,65 @@ Vec3<F> closest_on_torus(const Vec3<F>& p, const Vec3<F>& center, F major_radius
           center.z + minor_radius * tube.z};
 }
 
+// A signed distance grid laid out as constant data: origin x, y, z, voxel
+// size, then the voxel counts nx, ny, nz, then the distances at voxel
+// centres, x fastest (nodes/distance_grid.h).
+inline constexpr int distance_grid_header = 7;
+
+// The grid's distance at p, trilinear between voxel centres. Outside the
+// grid: the distance at the closest point of the grid, plus how far p lies
+// beyond it (never less than the true distance's lower bound; NaN reads
+// as the grid's corner).
+template <class F>
+F grid_distance(const float* grid, const Vec3<F>& p) {
+  using I = IntOf<F>;
+  const float voxel = grid[3];
+  const int size[3] = {int(grid[4]), int(grid[5]), int(grid[6])};
+  const float* distance = grid + distance_grid_header;
+  F coordinate[3] = {p.x, p.y, p.z};
+  F outside = splat<F>(0.0f);
+  I cell[3];
+  F weight[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    const float lo = grid[axis] + 0.5f * voxel, hi = grid[axis] + (float(size[axis]) - 0.5f) * voxel;
+    F clamped = min(max(coordinate[axis], splat<F>(lo)), splat<F>(hi));
+    F beyond = coordinate[axis] - clamped;
+    outside = outside + select(beyond == beyond, beyond * beyond, splat<F>(0.0f));
+    F position = (clamped - lo) * (1.0f / voxel);
+    F base = min(floor(position), splat<F>(float(size[axis] > 1 ? size[axis] - 2 : 0)));
+    cell[axis] = to_int(base);
+    weight[axis] = min(position - base, splat<F>(1.0f));
+  }
+  const int step_y = size[0], step_z = size[0] * size[1];
+  const int dx = size[0] > 1 ? 1 : 0, dy = size[1] > 1 ? step_y : 0, dz = size[2] > 1 ? step_z : 0;
+  auto at = [&](I index) { return gather(distance, index); };
+  I corner = cell[2] * step_z + cell[1] * step_y + cell[0];
+  F c00 = at(corner) + (at(corner + dx) - at(corner)) * weight[0];
+  F c10 = at(corner + dy) + (at(corner + dy + dx) - at(corner + dy)) * weight[0];
+  F c01 = at(corner + dz) + (at(corner + dz + dx) - at(corner + dz)) * weight[0];
+  F c11 = at(corner + dz + dy) + (at(corner + dz + dy + dx) - at(corner + dz + dy)) * weight[0];
+  F c0 = c00 + (c10 - c00) * weight[1];
+  F c1 = c01 + (c11 - c01) * weight[1];
+  return c0 + (c1 - c0) * weight[2] + sqrt(outside);
+}
+
+// The closest point of the grid's surface to p: p - d grad d / |grad d|,
+// the gradient by central differences a voxel apart (p itself where the
+// gradient vanishes).
+template <class F>
+Vec3<F> grid_closest(const float* grid, const Vec3<F>& p) {
+  const float h = grid[3];
+  F d = grid_distance(grid, p);
+  auto difference = [&](float dx, float dy, float dz) {
+    return grid_distance(grid, Vec3<F>{p.x + dx, p.y + dy, p.z + dz}) -
+           grid_distance(grid, Vec3<F>{p.x - dx, p.y - dy, p.z - dz});
+  };
+  Vec3<F> gradient{difference(h, 0, 0), difference(0, h, 0), difference(0, 0, h)};
+  Vec3<F> zero{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
+  Vec3<F> n = direction_or(gradient, zero);
+  return {p.x - d * n.x, p.y - d * n.y, p.z - d * n.z};
+}
+
 // 1989 section 2.2: algebraic product and sum, which keep fillets smooth.
 template <class F> F soft_intersect(F a, F b) { return a * b; }
 template <class F> F soft_union(F a, F b) { return a + b - a * b; }

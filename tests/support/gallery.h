@@ -8,7 +8,7 @@
 
 #include "graph/parse.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_images.h"
+#include "render/graph_files.h"
 
 namespace shadetree::testing {
 
@@ -30,10 +30,10 @@ inline std::vector<std::string> gallery_graphs(GraphKind kind) {
   return paths;
 }
 
-// A gallery graph compiled as `shadetree render` compiles it (its images
-// read from its folder); `observe` as in load_and_compile.
+// A gallery graph compiled as `shadetree render` compiles it (the files it
+// names read from its folder); `observe` as in load_and_compile.
 inline Result<LoadedGraph> load_gallery_graph(const std::string& path, const PassObserver& observe = {}) {
-  return load_and_compile(path, {}, observe, graph_image_reader());
+  return load_and_compile(path, {}, observe, graph_files());
 }
 
 // Test names from paths: "graphs/marble.json" -> "marble".

@@ -1,0 +1,16 @@
+// The files a graph's ops name, read from the graph's folder or a folder
+// the user allowed (--search-path), as scene meshes are
+// (render/resource_path.h): images for the `image` op (OpenImageIO), mesh
+// files as signed distance grids for the mesh ops (Assimp, then OpenVDB).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "graph/check.h"
+
+namespace shadetree {
+
+GraphFiles graph_files(std::vector<std::string> search_paths = {});
+
+}  // namespace shadetree
