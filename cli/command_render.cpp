@@ -263,7 +263,7 @@ ExitStatus render(const RenderArguments& arguments) {
                 : !tiers.jit_ready || tiers.compiled_runs == 0
                     ? "tiered: interpreter throughout, the JIT still compiling"
                     : "tiered: JIT ready after " + milliseconds_text(tiers.jit_ready_milliseconds) + ", " +
-                          std::to_string(tiers.compiled_runs) + " of " + std::to_string(runs) + " tiles on it";
+                          std::to_string(tiers.compiled_runs) + " of " + std::to_string(runs) + " kernel runs on it";
     }
     const std::string counter =
         frames.size() > 1 ? "frame " + std::to_string(index + 1) + " of " + std::to_string(frames.size()) + ": " : "";
