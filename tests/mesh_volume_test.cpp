@@ -56,7 +56,7 @@ TEST_F(MeshVolume, CubeBecomesASignedDistanceGrid) {
   EXPECT_GT(grid_value_at(*grid, {0.55f, 0.55f, 0.55f}), 0.0f);
 }
 
-// A texture graph's colour at one point, from a volume graph's outputs.
+// A volume graph's density, and its colour where it has one, at one point.
 std::vector<float> evaluate(const std::string& nodes, const std::string& outputs, const std::array<float, 3>& point,
                             const GraphFiles& files) {
   Result<LoadedGraph> loaded =
@@ -71,10 +71,10 @@ std::vector<float> evaluate(const std::string& nodes, const std::string& outputs
   std::vector<float*> planes;
   for (float& value : values) planes.push_back(&value);
   make_interpreted_kernel(loaded->ir)->bind(loaded->params.data(), UniformInputs{})->run(inputs, planes.data(), 1);
-  return {values[static_cast<std::size_t>(layout.plane(OutputId::density))],
-          values[static_cast<std::size_t>(layout.plane(OutputId::color, 0))],
-          values[static_cast<std::size_t>(layout.plane(OutputId::color, 1))],
-          values[static_cast<std::size_t>(layout.plane(OutputId::color, 2))]};
+  std::vector<float> result = {values[static_cast<std::size_t>(layout.plane(OutputId::density))]};
+  if (layout.provides(OutputId::color))
+    for (int c = 0; c < 3; ++c) result.push_back(values[static_cast<std::size_t>(layout.plane(OutputId::color, c))]);
+  return result;
 }
 
 const char* const mesh_ops = R"({"id": "p", "op": "P"},
