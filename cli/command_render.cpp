@@ -122,12 +122,12 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
 Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
                                      const RenderArguments& arguments) {
   const Graph& graph = *loaded.graph;
+  if (graph.kind != GraphKind::volume && (arguments.step || arguments.jitter))
+    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
   if (graph.kind == GraphKind::texture) {
     if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
       return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                         "--object, --spp and --no-shadows are for surface graphs; this is a texture graph"};
-    if (arguments.step || arguments.jitter)
-      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
     Result<TextureView> view = texture_view(graph, arguments.size, arguments.frame);
     if (!view) return view.error();
     return FrameRenderer([&, view = *view](float frame, std::string* summary) {
@@ -149,8 +149,6 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     });
   }
   if (graph.kind == GraphKind::volume) return volume_frame_renderer(loaded, kernel, arguments);
-  if (arguments.step || arguments.jitter)
-    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
   if (!arguments.object.empty() && graph.render.scene)
     std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", arguments.file.c_str(),
                  arguments.object.c_str());
