@@ -18,14 +18,13 @@ class SceneParser {
                          "render scene");
     SceneDesc result;
     if (scene.contains("camera")) result.camera = camera(scene["camera"]);
-    if (kind_ == GraphKind::volume) {
-      if (scene.contains("objects"))
-        fail("a volume graph's scene holds no objects (the volume is render.volume; objects in volumes are not "
-             "supported yet)");
-    } else {
+    // A surface graph shades its objects; a volume graph's objects are
+    // opaque, of one colour each, seen through and behind the volume.
+    if (kind_ != GraphKind::volume || scene.contains("objects")) {
       if (!scene.contains("objects")) fail("render scene has no \"objects\"");
       const json& objects = scene["objects"];
-      if (!objects.is_array() || objects.empty()) fail("scene objects must be a non-empty array");
+      if (!objects.is_array() || (objects.empty() && kind_ != GraphKind::volume))
+        fail("scene objects must be a non-empty array");
       if (objects.size() > max_scene_objects)
         fail("scene has more than " + std::to_string(max_scene_objects) + " objects");
       for (std::size_t index = 0; index < objects.size(); ++index)
@@ -134,6 +133,7 @@ class SceneParser {
     object.id = static_cast<int>(index);
     auto common = [&](std::initializer_list<const char*> own) {
       std::vector<const char*> fields = {"type", "id", "transform", "doc"};
+      if (kind_ == GraphKind::volume) fields.push_back("color");
       fields.insert(fields.end(), own);
       for (const auto& [key, value] : spec.items()) {
         bool known = false;
@@ -191,6 +191,7 @@ class SceneParser {
       object.id = id.get<int>();
     }
     if (spec.contains("transform")) object.transform = transform(spec["transform"], where);
+    if (spec.contains("color")) object.color = color(spec["color"], where + " color");
     return object;
   }
 

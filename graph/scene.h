@@ -28,6 +28,7 @@ struct ObjectDesc {
   std::array<float, 3> half_size{1.0f, 1.0f, 1.0f};     // box
   std::vector<std::array<float, 2>> profile;            // revolution: (radius, height) points
   std::string mesh_file;                                // mesh: as written, relative to the graph file
+  std::array<float, 3> color{0.8f, 0.8f, 0.8f};         // in volume scenes, where objects are not shaded by a graph
 };
 
 struct CameraDesc {

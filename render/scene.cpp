@@ -50,6 +50,7 @@ Result<Scene> Scene::build(const SceneDesc& desc, const std::string& graph_file,
     const ObjectDesc& object_desc = desc.objects[index];
     SceneObject object;
     object.id = object_desc.id;
+    object.color = to_vec3(object_desc.color);
     if (object_desc.type == ObjectType::mesh) {
       Result<std::string> path = resolve_graph_resource(graph_file, object_desc.mesh_file, search_paths,
                                                         "scene object #" + std::to_string(index + 1) + " file");

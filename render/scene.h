@@ -26,6 +26,7 @@ struct SceneObject {
   glm::mat4 world_to_object{1.0f};
   glm::mat3 normal_to_world{1.0f};   // inverse transpose of the linear part
   glm::mat3 normal_to_object{1.0f};  // its inverse
+  glm::vec3 color{0.8f};             // a volume scene's opaque objects are this colour
 };
 
 struct Light {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -40,6 +41,7 @@ struct MarchingRay {
   float ior = 1.0f;  // the refractive index the ray is travelling through
   glm::vec3 color{0.0f};
   float alpha = 0.0f;
+  std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
 
   float segment_start() const { return entry + static_cast<float>(segment) * step_length; }
   float segment_length() const { return std::min(step_length, exit - segment_start()); }
@@ -76,6 +78,15 @@ struct ShadowRay {
   float t = 0.0f, end = 0.0f;  // the next segment's start; where the ray leaves the box or meets the light
   float transmittance = 1.0f;
   std::size_t slot = 0;  // in the step's transmittance list
+};
+
+// An opaque object seen at a pixel, through what the volume in front of
+// it lets through.
+struct ObjectSample {
+  int pixel = 0;  // in the tile
+  SceneHit hit;
+  glm::vec3 to_viewer{0.0f};
+  float weight = 1.0f;  // 1 - the alpha of the volume in front
 };
 
 // What one tile's march works in: the batches of its kernel calls (march
@@ -119,35 +130,56 @@ class Marcher {
     const std::size_t lights = scene_.lights().size();
     pixels.assign(static_cast<std::size_t>(tile.width) * tile.height, background_);
     std::vector<MarchingRay> rays;
+    std::vector<ObjectSample> objects;
     for (int y = 0; y < tile.height; ++y)
       for (int x = 0; x < tile.width; ++x) {
         const int column = tile.x0 + x, row = tile.y0 + y;
         const Ray ray = camera.ray(static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+        const std::optional<SceneHit> hit = first_object(ray, 0.0f);
         const std::optional<Span> span = clip_to_box(ray, lo_, hi_);
-        if (!span || span->far <= 0.0f) continue;
+        if (!span || span->far <= 0.0f || (hit && hit->t <= span->near)) {
+          if (hit) {
+            objects.push_back(ObjectSample{y * tile.width + x, *hit, -ray.direction, 1.0f});
+            pixels[static_cast<std::size_t>(y) * tile.width + x] = glm::vec3(0.0f);  // the object covers it
+          }
+          continue;
+        }
         MarchingRay& marching = rays.emplace_back();
         marching.pixel = y * tile.width + x;
         marching.origin = ray.origin;
         marching.frame = ray_frame(ray.direction);
         marching.entry = std::max(span->near, 0.0f);
-        marching.exit = span->far;
+        marching.exit = hit ? std::min(span->far, hit->t) : span->far;
+        marching.backdrop = hit;
         marching.step_length = step_;
         if (jitter_) marching.jitter = unit_float(pixel_hash(column, row, 0));
         marching.segment = needs_gradients() ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
-    if (rays.empty()) return;
+    if (rays.empty() && objects.empty()) return;
+    // Objects are shaded in batches of the packet size too; there are at
+    // most as many as the rays and the pixels without volume.
+    const std::size_t tile_rays = rays.size() + objects.size();
     const std::size_t packet = std::min(
-        rays.size(), options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : rays.size());
+        tile_rays, options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : tile_rays);
     TileScratch scratch(packet, lights, kernel_, step_, bound, kernel_ns);
     for (std::size_t first = 0; first < rays.size(); first += packet) {
       const std::size_t last = std::min(rays.size(), first + packet);
       std::vector<MarchingRay*> live;
       for (std::size_t i = first; i < last; ++i) live.push_back(&rays[i]);
       while (!live.empty()) march_once(live, scratch);
-      for (std::size_t i = first; i < last; ++i)
-        pixels[static_cast<std::size_t>(rays[i].pixel)] = rays[i].color + (1.0f - rays[i].alpha) * background_;
+      for (std::size_t i = first; i < last; ++i) {
+        const MarchingRay& ray = rays[i];
+        const std::size_t pixel = static_cast<std::size_t>(ray.pixel);
+        pixels[pixel] = ray.color;
+        if (ray.backdrop && ray.alpha < 1.0f - options_.termination)
+          objects.push_back(ObjectSample{ray.pixel, *ray.backdrop, -ray.frame.along, 1.0f - ray.alpha});
+        else
+          pixels[pixel] += (1.0f - ray.alpha) * background_;
+      }
     }
+    for (std::size_t first = 0; first < objects.size(); first += packet)
+      shade_objects(objects, first, std::min(objects.size(), first + packet), pixels, scratch);
     const TileCounts& marched = scratch.counts;
     counts.density_samples += marched.density_samples;
     counts.gradient_samples += marched.gradient_samples;
@@ -157,6 +189,59 @@ class Marcher {
   }
 
  private:
+  // The nearest opaque object on the ray past t_min.
+  std::optional<SceneHit> first_object(const Ray& ray, float t_min) const {
+    if (scene_.objects().empty()) return std::nullopt;
+    return scene_.intersect(ray, t_min, std::numeric_limits<float>::infinity());
+  }
+
+  // The opaque objects of samples [first, last), lit by the scene's lights
+  // through the volume (its shadow falls on them) and composited under
+  // what the volume in front of them added to their pixels.
+  void shade_objects(const std::vector<ObjectSample>& objects, std::size_t first, std::size_t last,
+                     std::vector<glm::vec3>& pixels, TileScratch& scratch) const {
+    const std::size_t lights = scene_.lights().size();
+    std::vector<LitPoint> points(last - first);
+    std::vector<float> transmittance((last - first) * lights, 1.0f);
+    std::vector<ShadowRay> shadow_rays;
+    for (std::size_t k = first; k < last; ++k) {
+      const ObjectSample& sample = objects[k];
+      LitPoint& point = points[k - first];
+      point.point = sample.hit.world_point;
+      point.to_viewer = sample.to_viewer;
+      // Two-sided, as in the surface driver: the side facing the viewer.
+      point.geometric_normal = glm::dot(sample.hit.world_normal, sample.to_viewer) < 0.0f ? -sample.hit.world_normal
+                                                                                          : sample.hit.world_normal;
+      point.shading_normal = point.geometric_normal;
+      if (!shadows_) continue;
+      const glm::vec3 x = point.point + 1e-4f * (1.0f + glm::length(point.point)) * point.geometric_normal;
+      for (std::size_t l = 0; l < lights; ++l) add_shadow_ray(x, l, (k - first) * lights + l, shadow_rays);
+    }
+    march_shadows(shadow_rays, transmittance, scratch);
+    for (std::size_t k = first; k < last; ++k) {
+      const ObjectSample& sample = objects[k];
+      SurfaceMaterial material;
+      material.color = sample.hit.object->color;
+      const glm::vec3 color =
+          lit_ ? light_point(scene_, material, points[k - first], shadows_, transmittance.data() + (k - first) * lights)
+               : material.color;
+      pixels[static_cast<std::size_t>(sample.pixel)] += sample.weight * color;
+    }
+  }
+
+  // A shadow ray from x toward light `light`, through the part of the box
+  // between them; its transmittance goes to `slot`.
+  void add_shadow_ray(const glm::vec3& x, std::size_t light, std::size_t slot, std::vector<ShadowRay>& rays) const {
+    ShadowRay& shadow = rays.emplace_back();
+    float distance = 0.0f;
+    shadow.origin = x;
+    shadow.direction = direction_to_light(scene_.lights()[light], x, &distance);
+    const std::optional<Span> span = clip_to_box(Ray{x, shadow.direction}, lo_, hi_);
+    shadow.t = std::max(span ? span->near : 0.0f, 0.0f);
+    shadow.end = span ? std::min(span->far, distance) : 0.0f;
+    shadow.slot = slot;
+  }
+
   // Gradients serve the lighting and the refraction.
   bool needs_gradients() const { return lit_ || refracts_; }
 
@@ -184,7 +269,8 @@ class Marcher {
     ray.origin = origin;
     ray.frame = ray_frame(bent / length);
     ray.entry = 0.0f;
-    ray.exit = std::max(span->far, 0.0f);
+    ray.backdrop = first_object(Ray{origin, bent / length}, 0.0f);
+    ray.exit = std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f);
     // A probe just behind, for the next gradient, then segments from here.
     ray.segment = -1;
   }
@@ -268,16 +354,7 @@ class Marcher {
       // it. Per reference step, so that the choice does not follow the step.
       if (opacity(scratch.samples, i) * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
       const glm::vec3 x = ray.at(ray.sample_t()) + 2.0f * reference_step_ * normals[i];
-      for (std::size_t l = 0; l < lights; ++l) {
-        ShadowRay& shadow = rays.emplace_back();
-        float distance = 0.0f;
-        shadow.origin = x;
-        shadow.direction = direction_to_light(scene_.lights()[l], x, &distance);
-        const std::optional<Span> span = clip_to_box(Ray{x, shadow.direction}, lo_, hi_);
-        shadow.t = std::max(span ? span->near : 0.0f, 0.0f);
-        shadow.end = span ? std::min(span->far, distance) : 0.0f;
-        shadow.slot = i * lights + l;
-      }
+      for (std::size_t l = 0; l < lights; ++l) add_shadow_ray(x, l, i * lights + l, rays);
     }
     march_shadows(rays, transmittance, scratch);
     return transmittance;
@@ -356,7 +433,8 @@ class Marcher {
           point.shading_normal = normals[i];
           point.geometric_normal = normals[i];
           point.to_viewer = -ray.frame.along;
-          color = light_point(scene_, material, point, false, transmittance.data() + i * scene_.lights().size());
+          // Objects cast shadows into the volume too (shadows_ tests them).
+          color = light_point(scene_, material, point, shadows_, transmittance.data() + i * scene_.lights().size());
         }
         // Front to back: t = alpha_k (1 - alpha); color += t color_k.
         const float alpha = segment_alpha(sample_opacity, ray.segment_length());

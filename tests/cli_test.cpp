@@ -235,7 +235,7 @@ TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
       {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "step": 0})", "step must be positive"},
       {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "step": 1e-6})", "too small"},
       {R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [-1, 1, 1]}})", "empty"},
-      {bounded + R"(, "scene": {"objects": [{"type": "sphere"}]})", "holds no objects"}};
+      {bounded + R"(, "scene": {"objects": [{"type": "sphere", "radius": 0}]})", "radius must be positive"}};
   for (const auto& [render, words] : cases) {
     const fs::path graph = write("volume.json", R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
         "nodes": [], "outputs": {"density": 0.5}, "render": {)" + render + "}}");

@@ -45,6 +45,16 @@ TEST(ParseVolume, DefaultStepCrossesTheDiagonalIn256Steps) {
   EXPECT_EQ(reference_step(*graph->render.volume), 0.1f);
 }
 
+// A volume's scene may hold opaque objects, each of one colour.
+TEST(ParseVolume, ScenesHoldOpaqueObjectsOfOneColour) {
+  Result<Graph> graph = parse_with_render(R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+      "scene": {"objects": [{"type": "plane", "color": [0.2, 0.4, 0.6]}, {"type": "sphere"}]}})");
+  ASSERT_TRUE(graph.ok()) << graph.error().to_string();
+  ASSERT_EQ(graph->render.scene->objects.size(), 2u);
+  EXPECT_EQ(graph->render.scene->objects[0].color[2], 0.6f);
+  EXPECT_EQ(graph->render.scene->objects[1].color[0], 0.8f) << "the default colour";
+}
+
 TEST(ParseVolume, MalformedVolumesGiveOneLineErrors) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"volume": {}})", "no \"bounds\""},
@@ -59,7 +69,11 @@ TEST(ParseVolume, MalformedVolumesGiveOneLineErrors) {
       {R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "jitter": 1}})", "true or false"},
       {R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "stepsize": 1}})", "unknown field"},
       {R"({"volume": [1]})", "must be an object"},
-      {R"({"scene": {"objects": [{"type": "sphere"}]}})", "holds no objects"},
+      {R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}}, "scene": {"objects": [{"type": "cone"}]}})",
+       "unknown type \"cone\""},
+      {R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+           "scene": {"objects": [{"type": "plane", "color": [1, 2]}]}})",
+       "color"},
   };
   for (const auto& [render, words] : cases) EXPECT_NE(error_of(render).find(words), std::string::npos) << render;
   EXPECT_NE(error_of(R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}}})", "surface")

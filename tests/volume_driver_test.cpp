@@ -213,6 +213,85 @@ TEST(VolumeDriver, RefractionFollowsSnellsLaw) {
               0.01f);
 }
 
+ObjectDesc plane_at_z(float z, std::array<float, 3> color) {
+  ObjectDesc plane;
+  plane.type = ObjectType::plane;
+  plane.transform.rotate_degrees = {90.0f, 0.0f, 0.0f};  // y = 0, normal +y, turned to face +z
+  plane.transform.translate = {0.0f, 0.0f, z};
+  plane.color = color;
+  return plane;
+}
+
+// An opaque object behind the box shows through what the box lets
+// through, and one inside the box ends the march where it stands: through
+// a thickness L of constant density 0.3 the pixel is
+// a + (1 - a) colour with a = 1 - 0.7^(L / reference step).
+TEST(VolumeDriver, OpaqueObjectsShowThroughTheVolumeAndEndTheMarch) {
+  const LoadedGraph loaded = compile_volume("", R"("density": 0.3, "color": [1, 1, 1])");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  VolumeRenderOptions exact;
+  exact.termination = 0.0f;
+  VolumeDesc volume = unit_box(0.01f);
+  volume.reference_step = 0.25f;
+  for (const auto& [z, thickness] : {std::pair{-3.0f, 2.0f}, std::pair{0.0f, 1.0f}}) {
+    SceneDesc desc = looking_down_z(Lighting::none);
+    desc.background = {0.125f, 0.125f, 0.125f};  // hidden everywhere by the plane
+    desc.objects = {plane_at_z(z, {0.5f, 0.25f, 0.0f})};
+    const float a = 1.0f - std::pow(0.7f, thickness / 0.25f);
+    const Image image = render(*kernel, loaded, desc, volume, 9, exact);
+    EXPECT_NEAR(centre_red(image), a + (1.0f - a) * 0.5f, 1e-4f) << "plane at z = " << z;
+    EXPECT_EQ(image.pixels[0], 0.5f) << "outside the box, the plane itself";
+    EXPECT_EQ(image.pixels[1], 0.25f);
+  }
+}
+
+// The volume's shadow falls on the objects: a floor point whose path to
+// the light crosses a length s of the box receives 0.7^(s / reference
+// step) of the light it receives without shadows. Here the box is x in
+// [-1.5, -0.5], z in [-1, 1], the light travels along (1, 0, -1), and the
+// floor point at x = 1.125, z = -3 (not behind the box as the camera sees
+// it) reaches the light through x in [-1.5, -0.875]: s = 0.625 sqrt 2.
+TEST(VolumeDriver, TheVolumeShadowsObjects) {
+  const LoadedGraph loaded = compile_volume("", R"("density": 0.3, "color": [1, 1, 1])");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {1.0f, 0.0f, -1.0f};
+  desc.objects = {plane_at_z(-3.0f, {1.0f, 1.0f, 1.0f})};
+  VolumeDesc volume;
+  volume.bounds_min = {-1.5f, -1.0f, -1.0f};
+  volume.bounds_max = {-0.5f, 1.0f, 1.0f};
+  volume.step = volume.reference_step = 0.25f;
+  VolumeRenderOptions exact, unshadowed;
+  exact.termination = unshadowed.termination = 0.0f;
+  unshadowed.shadows = false;
+  // Pixel column 10 of 12 is at x = 1.125 (the image spans x in [-1.5, 1.5]).
+  const std::size_t pixel = (6 * 12 + 10) * 3;
+  const Image shadowed = render(*kernel, loaded, desc, volume, 12, exact);
+  const Image plain = render(*kernel, loaded, desc, volume, 12, unshadowed);
+  ASSERT_GT(plain.pixels[pixel], 0.1f);
+  EXPECT_NEAR(shadowed.pixels[pixel] / plain.pixels[pixel], std::pow(0.7f, 0.625f * std::sqrt(2.0f) / 0.25f), 1e-3f)
+      << "within what the shadow ray's start, 1e-4 (1 + |x|) off the floor, adds to its path";
+}
+
+// Objects cast shadows into the volume: a wall between the light and a
+// soft sphere (out of the camera's view) leaves only the ambient light,
+// here none.
+TEST(VolumeDriver, ObjectsShadowTheVolume) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {-1.0f, 0.0f, 0.0f};  // from +x
+  const Image lit = render(*kernel, loaded, desc, unit_box(0.02f), 16);
+  ObjectDesc wall;
+  wall.type = ObjectType::box;
+  wall.half_size = {0.5f, 10.0f, 10.0f};
+  wall.transform.translate = {3.0f, 0.0f, 0.0f};
+  desc.objects = {wall};
+  const Image dark = render(*kernel, loaded, desc, unit_box(0.02f), 16);
+  EXPECT_GT(*std::max_element(lit.pixels.begin(), lit.pixels.end()), 0.2f);
+  EXPECT_LE(*std::max_element(dark.pixels.begin(), dark.pixels.end()), 1e-6f);
+}
+
 TEST(VolumeDriver, StepAndFrameReachTheGraph) {
   const LoadedGraph loaded =
       compile_volume(R"({"id": "st", "op": "step_size"}, {"id": "f", "op": "frame"}, {"id": "fw", "op": "filter_width"},
