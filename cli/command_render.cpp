@@ -92,14 +92,14 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
   return FrameRenderer([&, scene, camera, view, volume](float frame, std::string* summary) {
     VolumeView frame_view = view;
     frame_view.frame = frame;
-    ProgressReporter progress("marching " + arguments.file);
+    ProgressReporter progress("marching " + arguments.file, "tiles", "rays");
     VolumeRenderOptions options;
     options.threads = arguments.threads;
     options.step = arguments.step.value_or(0.0f);
     options.shadows = !arguments.no_shadows;
     if (arguments.jitter) options.jitter = true;
     options.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
-    options.progress = [&progress](double fraction) { progress.update(fraction); };
+    options.progress = progress.callback();
     VolumeRenderStats stats;
     const auto start = std::chrono::steady_clock::now();
     Result<Image> image = render_volume(kernel, loaded.params, **scene, volume, *camera, frame_view, options, &stats);
@@ -133,10 +133,10 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     return FrameRenderer([&, view = *view](float frame, std::string* summary) {
       TextureView frame_view = view;
       frame_view.frame = frame;
-      ProgressReporter progress("rendering " + arguments.file);
+      ProgressReporter progress("rendering " + arguments.file, "tiles", "samples");
       TextureRenderOptions options;
       options.threads = arguments.threads;
-      options.progress = [&progress](double fraction) { progress.update(fraction); };
+      options.progress = progress.callback();
       const auto start = std::chrono::steady_clock::now();
       Result<Image> image = render_texture(kernel, loaded.params, frame_view, options);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -163,11 +163,11 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
   return FrameRenderer([&, scene, camera, view](float frame, std::string* summary) {
     SurfaceView frame_view = view;
     frame_view.frame = frame;
-    ProgressReporter progress("rendering " + arguments.file);
+    ProgressReporter progress("rendering " + arguments.file, "tiles", "samples");
     SurfaceRenderOptions options;
     options.threads = arguments.threads;
     options.shadows = !arguments.no_shadows;
-    options.progress = [&progress](double fraction) { progress.update(fraction); };
+    options.progress = progress.callback();
     SurfaceRenderStats stats;
     const auto start = std::chrono::steady_clock::now();
     Result<Image> image = render_surface(kernel, loaded.params, **scene, *camera, frame_view, options, &stats);

@@ -56,12 +56,12 @@ ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
   Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, loaded->ir, 0);
   if (!kernel) return report(kernel.error());
 
-  ProgressReporter progress("voxelizing " + arguments.file);
+  ProgressReporter progress("voxelizing " + arguments.file, "slices", "voxels");
   VoxelizeOptions options;
   options.resolution = arguments.resolution;
   options.frame = arguments.frame.value_or(graph.render.frame);
   options.threads = arguments.threads;
-  options.progress = [&progress](double fraction) { progress.update(fraction); };
+  options.progress = progress.callback();
   const auto start = std::chrono::steady_clock::now();
   Result<VoxelGrid> grid = voxelize(**kernel, loaded->params, *graph.render.volume, options);
   if (!grid) return report(Diagnostic{grid.error().status, arguments.file, {}, {}, grid.error().message});

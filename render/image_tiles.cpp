@@ -9,21 +9,22 @@
 
 namespace shadetree {
 
-void for_each_tile(int width, int height, int tile_size, int threads, const std::function<void(const Tile&)>& render,
-                   const std::function<void(double)>& progress) {
+void for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
+                   const ProgressCallback& progress) {
   const int tiles_x = (width + tile_size - 1) / tile_size;
   const int tiles_y = (height + tile_size - 1) / tile_size;
   const int tile_count = tiles_x * tiles_y;
-  std::atomic<int> tiles_done{0};
+  std::atomic<long> tiles_done{0}, items_done{0};
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const tbb::blocked_range2d<int>& range) {
       for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
         for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
           const int x0 = tx * tile_size, y0 = ty * tile_size;
-          render(Tile{x0, y0, std::min(tile_size, width - x0), std::min(tile_size, height - y0)});
-          const int done = ++tiles_done;
-          if (progress) progress(static_cast<double>(done) / tile_count);
+          const long items = render(Tile{x0, y0, std::min(tile_size, width - x0), std::min(tile_size, height - y0)});
+          const long all_items = items_done += items;
+          const long done = ++tiles_done;
+          if (progress) progress(ProgressCount{done, tile_count, all_items});
         }
     });
   });

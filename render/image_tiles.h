@@ -5,6 +5,8 @@
 
 #include <functional>
 
+#include "render/progress.h"
+
 namespace shadetree {
 
 struct Tile {
@@ -13,9 +15,10 @@ struct Tile {
 };
 
 // render(tile) for every tile of `tile_size` pixels square of a `width` x
-// `height` image, on `threads` threads (0: all cores); progress(fraction
-// of tiles done), if set, after each.
-void for_each_tile(int width, int height, int tile_size, int threads, const std::function<void(const Tile&)>& render,
-                   const std::function<void(double)>& progress);
+// `height` image, on `threads` threads (0: all cores); render returns the
+// work the tile held (rays, samples), which progress, if set, is told of
+// after each tile with the tiles done.
+void for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
+                   const ProgressCallback& progress);
 
 }  // namespace shadetree

@@ -104,7 +104,7 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
   std::atomic<long> visible_total{0};
   ThreadBindings bindings(kernel, params.data(), surface_uniforms(scene, view.frame));
 
-  auto render_tile = [&](const Tile& tile) {
+  auto render_tile = [&](const Tile& tile) -> long {
     const int x0 = tile.x0, y0 = tile.y0, w = tile.width, h = tile.height;
     std::vector<glm::vec3> sums(static_cast<std::size_t>(w) * h, glm::vec3(0.0f));
     std::vector<VisibleSample> visible;
@@ -203,6 +203,7 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
         const glm::vec3 value = sums[static_cast<std::size_t>(y) * w + x] * weight;
         for (int c = 0; c < 3; ++c) pixel[c] = value[c];
       }
+    return static_cast<long>(w) * h * samples_per_pixel;
   };
   for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
   if (stats) {

@@ -6,11 +6,11 @@
 // background); then the driver lights what the graph returned.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "ir/kernel.h"
 #include "render/camera.h"
+#include "render/progress.h"
 #include "nodes/image.h"
 #include "render/scene.h"
 
@@ -26,7 +26,7 @@ struct SurfaceView {
 struct SurfaceRenderOptions {
   int threads = 0;  // 0: all cores
   bool shadows = true;  // and the scene's "shadows"
-  std::function<void(double fraction_done)> progress;  // may be empty
+  ProgressCallback progress;  // may be empty
 };
 
 // Where the time went, summed over threads (seconds of one core).

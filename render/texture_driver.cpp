@@ -83,7 +83,7 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
 
   ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
 
-  auto render_tile = [&](const Tile& tile) {
+  auto render_tile = [&](const Tile& tile) -> long {
     const int x0 = tile.x0, y0 = tile.y0, w = tile.width, h = tile.height;
     const std::size_t count = static_cast<std::size_t>(w) * h;
     SampleBuffers input(count, kernel.reads());
@@ -102,6 +102,7 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
         if (alpha) pixel[3] = outputs.plane(layout.plane(OutputId::alpha))[i];
       }
     }
+    return static_cast<long>(count);
   };
   for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
   return image;

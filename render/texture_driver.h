@@ -2,13 +2,13 @@
 // parallel over tiles, through the Kernel interface.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
+#include "render/progress.h"
 
 namespace shadetree {
 
@@ -44,7 +44,7 @@ TextureSample texture_sample_at_point(const TextureView& view, const float P[3])
 
 struct TextureRenderOptions {
   int threads = 0;  // 0: all cores
-  std::function<void(double fraction_done)> progress;  // may be empty
+  ProgressCallback progress;  // may be empty
 };
 
 // A texture graph's "color" and optional "alpha" (nodes/output_contract.h).

@@ -509,7 +509,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
 
   for_each_tile(
       view.width, view.height, tile_size, options.threads,
-      [&](const Tile& tile) {
+      [&](const Tile& tile) -> long {
         StageClock clock(tile_ns);
         std::vector<glm::vec3> pixels;
         TileCounts counts;
@@ -527,6 +527,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         shadow_samples += counts.shadow_samples;
         kernel_calls += counts.kernel_calls;
         lane_slots += counts.lane_slots;
+        return counts.rays;
       },
       options.progress);
 

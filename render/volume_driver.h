@@ -12,7 +12,6 @@
 // so the image is the same for any packet size and thread count.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "ir/kernel.h"
 #include "nodes/image.h"
 #include "render/camera.h"
+#include "render/progress.h"
 #include "render/scene.h"
 
 namespace shadetree {
@@ -42,7 +42,7 @@ struct VolumeRenderOptions {
   bool shadows = true;  // and the scene's "shadows": a secondary march toward each light
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
-  std::function<void(double fraction_done)> progress;  // may be empty
+  ProgressCallback progress;  // may be empty
 };
 
 // Where the time went (seconds of one core, summed over threads) and how

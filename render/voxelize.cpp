@@ -56,8 +56,8 @@ Result<VoxelGrid> voxelize(const Kernel& kernel, const std::vector<float>& param
         if (colored)
           for (int c = 0; c < 3; ++c) grid.color[3 * (first + s) + c] = outputs.plane(layout.plane(OutputId::color, c))[s];
       }
-      const int done = ++slices_done;
-      if (options.progress) options.progress(static_cast<double>(done) / grid.size[2]);
+      const long done = ++slices_done;
+      if (options.progress) options.progress(ProgressCount{done, grid.size[2], done * static_cast<long>(slice)});
     });
   });
   return grid;

@@ -3,12 +3,12 @@
 #pragma once
 
 #include <array>
-#include <functional>
 #include <vector>
 
 #include "graph/diagnostic.h"
 #include "graph/scene.h"
 #include "ir/kernel.h"
+#include "render/progress.h"
 
 namespace shadetree {
 
@@ -35,7 +35,7 @@ struct VoxelizeOptions {
   int resolution = 128;  // voxels along the longest side of the bounds
   float frame = 0.0f;
   int threads = 0;  // 0: all cores
-  std::function<void(double fraction_done)> progress;
+  ProgressCallback progress;  // slices of the grid, voxels
 };
 
 // The graph's density (and colour) at every voxel centre, a slice at a
