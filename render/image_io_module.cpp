@@ -3,16 +3,58 @@
 // images pay for loading OpenImageIO: Debian's build of it pulls in some
 // 250 shared libraries (GDAL, OpenVDB, Xerces...), a quarter of a second of
 // dynamic linking at every start. render/image_output.cpp loads it.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
 
 #include <OpenImageIO/imageio.h>
 
 namespace {
+
+// OpenImageIO's errors can span lines (its own and the format library's
+// restatement); the first says what is wrong.
 void set_error(char* error, std::size_t size, const std::string& message) {
-  std::snprintf(error, size, "%s", message.c_str());
+  std::snprintf(error, size, "%s", message.substr(0, message.find('\n')).c_str());
 }
+
+// libpng prints "libpng error: ..." on stderr itself once OpenImageIO's
+// error handler has kept the message and returned, which would put a
+// second line before shadetree's one-line error: stderr is pointed at
+// /dev/null while a file is read (one read at a time, so that the real
+// stderr is always put back).
+class StderrMuted {
+ public:
+  StderrMuted() : lock_(mutex()) {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~StderrMuted() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      ::dup2(saved_, 2);
+      ::close(saved_);
+    }
+  }
+  StderrMuted(const StderrMuted&) = delete;
+  StderrMuted& operator=(const StderrMuted&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex instance;
+    return instance;
+  }
+  std::lock_guard<std::mutex> lock_;
+  int saved_ = -1;
+};
+
 }  // namespace
 
 // Writes the pixels to `file` in the format `format_path`'s extension names;
@@ -44,6 +86,7 @@ extern "C" int shadetree_image_io_write(const char* format_path, const char* fil
 // than `max_pixels` pixels (when positive), before its pixels are read.
 extern "C" float* shadetree_image_io_read(const char* path, long long max_pixels, int* width, int* height,
                                           int* channels, char* error, std::size_t error_size) {
+  const StderrMuted muted;
   auto input = OIIO::ImageInput::open(path);
   if (!input) {
     set_error(error, error_size, OIIO::geterror());

@@ -191,6 +191,14 @@ TEST_F(Cli, ImageGraphsReadTheirFilesAndRefuseBadOnes) {
   fs::create_directories(directory_ / "inner");
   std::ofstream(directory_ / "inner" / "broken.png") << "not a png";
   ASSERT_TRUE(write_image(Image{2, 1, 3, {0.25f, 0.5f, 1.0f, 1.0f, 0.5f, 0.25f}}, (directory_ / "outside.exr").string()).ok());
+  // A real PNG cut short in its pixel data: libpng has its own say on
+  // stderr, which must not add a line to the error (regression).
+  Image ramp{64, 64, 3, {}};
+  for (int i = 0; i < 64 * 64 * 3; ++i) ramp.pixels.push_back(static_cast<float>((i * 37) % 101) / 100.0f);
+  const fs::path whole = directory_ / "whole.png";
+  ASSERT_TRUE(write_image(ramp, whole.string()).ok());
+  fs::copy_file(whole, directory_ / "inner" / "truncated.png");
+  fs::resize_file(directory_ / "inner" / "truncated.png", fs::file_size(whole) / 2);
   auto graph_naming = [&](const std::string& file) {
     const fs::path graph = directory_ / "inner" / "image.json";
     std::ofstream(graph) << R"({"format": "shadetree-graph", "version": 1, "kind": "texture", "nodes": [
@@ -198,10 +206,11 @@ TEST_F(Cli, ImageGraphsReadTheirFilesAndRefuseBadOnes) {
         "outputs": {"color": "img"}})";
     return graph.string();
   };
-  for (const std::string& file : {"missing.png", "broken.png", "../outside.exr"}) {
+  for (const char* file : {"missing.png", "broken.png", "truncated.png", "../outside.exr"}) {
     const CommandResult run = shadetree("render " + graph_naming(file) + " -o " + out + " --size 8x8");
     EXPECT_EQ(run.status, 2) << file << ": " << run.err;
     EXPECT_EQ(line_count(run.err), 1) << run.err;
+    EXPECT_EQ(run.err.find("\\n"), std::string::npos) << "no escaped second line: " << run.err;
     EXPECT_NE(run.err.find("node \"img\""), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
   }
