@@ -1,13 +1,18 @@
-// shadetree emit FILE --graph [--after-each-pass] | --llvm | --asm: what a graph compiles to,
-// after optimization, so that a reader can check the passes and see the
-// vector instructions.
+// shadetree emit FILE --graph [--after-each-pass] | --llvm | --asm | --cpp [-o FILE] [--name NAME]:
+// what a graph compiles to, after optimization, so that a reader can check
+// the passes and see the vector instructions; or the kernel as standalone
+// C++ to build into another program.
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cppgen/emit_cpp.h"
 #include "pipeline/compile_graph.h"
+#include "render/output_file.h"
 #include "render/graph_files.h"
 #include "jit/jit_compiler.h"
 
@@ -16,11 +21,40 @@ namespace shadetree {
 namespace {
 struct EmitArguments {
   std::string file;
-  bool graph = false, llvm = false, assembly = false, after_each_pass = false;
+  bool graph = false, llvm = false, assembly = false, cpp = false, after_each_pass = false;
+  std::string output, name;
   int width = 0;
   std::vector<std::string> assignments;
   std::vector<std::string> search_paths;
 };
+
+// The kernel's name: --name, else the graph's name, else the file's stem.
+std::string kernel_name(const EmitArguments& arguments, const Graph& graph) {
+  if (!arguments.name.empty()) return arguments.name;
+  if (!graph.name.empty()) return graph.name;
+  return std::filesystem::path(arguments.file).stem().string();
+}
+
+ExitStatus emit_cpp_file(const EmitArguments& arguments, const LoadedGraph& loaded) {
+  if (!arguments.name.empty() && c_identifier(arguments.name) != arguments.name)
+    return report(Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
+                             "--name must be a C identifier (letters, digits and _, not a keyword), got \"" +
+                                 arguments.name + "\""});
+  Result<std::string> source = emit_cpp(*loaded.graph, loaded.ir, loaded.params, kernel_name(arguments, *loaded.graph));
+  if (!source) return report(source.error());
+  if (arguments.output.empty()) {
+    std::fwrite(source->data(), 1, source->size(), stdout);
+    return ExitStatus::ok;
+  }
+  if (Status folder = check_output_folder(arguments.output); !folder) return report(folder.error());
+  Status written = write_then_rename(arguments.output, [&](const std::string& temporary) -> std::string {
+    std::ofstream file(temporary, std::ios::binary);
+    file << *source;
+    file.close();
+    return file ? "" : "cannot write " + temporary;
+  });
+  return written ? ExitStatus::ok : report(written.error());
+}
 
 ExitStatus emit(const EmitArguments& arguments) {
   PassObserver print_each_pass;
@@ -31,6 +65,7 @@ ExitStatus emit(const EmitArguments& arguments) {
   Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   if (arguments.after_each_pass) return ExitStatus::ok;
+  if (arguments.cpp) return emit_cpp_file(arguments, *loaded);
   if (arguments.graph) {
     std::printf("; %s: %d instructions before optimization, %zu after\n", arguments.file.c_str(),
                 loaded->instructions_before_optimization, loaded->ir.code.size());
@@ -46,7 +81,7 @@ ExitStatus emit(const EmitArguments& arguments) {
 }  // namespace
 
 void add_emit_command(CLI::App& app, CommandRunner& run) {
-  auto* command = app.add_subcommand("emit", "print the optimized graph, LLVM IR or machine code of a graph");
+  auto* command = app.add_subcommand("emit", "print the optimized graph, LLVM IR or machine code of a graph, or write its kernel as C++");
   auto arguments = std::make_shared<EmitArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
   auto* graph = command->add_flag("--graph", arguments->graph, "the optimized ShadeIR");
@@ -55,15 +90,21 @@ void add_emit_command(CLI::App& app, CommandRunner& run) {
   command->add_flag("--after-each-pass", arguments->after_each_pass,
                     "with --graph: the program after lowering and after each optimizer pass")
       ->needs(graph);
-  graph->excludes(llvm)->excludes(assembly);
-  llvm->excludes(assembly);
+  auto* cpp = command->add_flag("--cpp", arguments->cpp, "the kernel as a standalone C++ header");
+  command->add_option("-o,--output", arguments->output, "with --cpp: the header to write (default: stdout)")->needs(cpp);
+  command->add_option("--name", arguments->name,
+                      "with --cpp: prefix of the emitted types and function (default: the graph's name)")
+      ->needs(cpp);
+  graph->excludes(llvm)->excludes(assembly)->excludes(cpp);
+  llvm->excludes(assembly)->excludes(cpp);
+  assembly->excludes(cpp);
   command->add_option("--width", arguments->width, "vector width: 4, 8 or 16 (default: the host's widest)")
       ->check(CLI::IsMember({4, 8, 16}));
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
   add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] {
-    if (!arguments->graph && !arguments->llvm && !arguments->assembly)
-      throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm");
+    if (!arguments->graph && !arguments->llvm && !arguments->assembly && !arguments->cpp)
+      throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm, --cpp");
     run = [arguments] { return emit(*arguments); };
   });
 }

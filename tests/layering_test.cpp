@@ -13,9 +13,9 @@
 namespace {
 
 // Rank of each source folder: a file may include from folders of lower rank.
-// interp/ and codegen/ share a rank, so neither backend sees the other.
+// interp/, codegen/ and cppgen/ share a rank, so no backend sees another.
 const std::map<std::string, int> folder_rank = {
-    {"nodes", 0}, {"graph", 1}, {"ir", 2},     {"interp", 3}, {"codegen", 3},
+    {"nodes", 0}, {"graph", 1},    {"ir", 2},     {"interp", 3}, {"codegen", 3}, {"cppgen", 3},
     {"jit", 4},   {"pipeline", 5}, {"render", 6}, {"cli", 7},
 };
 
