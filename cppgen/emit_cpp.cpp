@@ -82,8 +82,8 @@ class CppEmitter {
       return error;
     }
     std::ostringstream out;
-    out << header() << library() << "\n" << interface() << "\n" << constants() << "\n" << uniform_function() << "\n"
-        << block_function() << "\n" << run_function();
+    out << header() << no_contraction_begin() << library() << "\n" << interface() << "\n" << constants() << "\n"
+        << uniform_function() << "\n" << block_function() << "\n" << run_function() << no_contraction_end();
     return out.str();
   }
 
@@ -103,7 +103,7 @@ class CppEmitter {
         << "// Standalone C++20 (the standard library only). Its SIMD width follows the target it is\n"
         << "// compiled for (16 lanes with AVX-512, 8 with AVX, 4 with SSE2 or NEON); define\n"
         << "// SHADETREE_NO_SIMD for one sample at a time. It computes what shadetree's interpreter\n"
-        << "// computes (compile with -ffp-contract=off for the same rounding, bit for bit).\n//\n"
+        << "// computes, with the same operations (multiplies and adds are never fused).\n//\n"
         << "//   " << name_ << "_params params;            // the graph's defaults\n"
         << "//   " << name_ << "_inputs inputs{...};       // planes of `count` floats\n"
         << "//   " << name_ << "_outputs outputs{...};\n"
@@ -132,6 +132,19 @@ class CppEmitter {
         << "}  // namespace shadetree\n"
         << "}  // namespace shadetree_emitted\n#endif  // SHADETREE_EMITTED_LIBRARY\n";
     return out.str();
+  }
+
+  // Multiplies and adds are not fused into FMAs (which GCC does by default
+  // with -march=native): the interpreter and the JIT round each one, and a
+  // fused one changes, for example, sin's range reduction at 1e4 by 1e-2.
+  // Scoped to the emitted code, not the includer's; all of it, since GCC
+  // does not inline across different optimization options.
+  static std::string no_contraction_begin() {
+    return "#if defined(__clang__)\n#pragma float_control(push)\n#pragma clang fp contract(off)\n"
+           "#elif defined(__GNUC__)\n#pragma GCC push_options\n#pragma GCC optimize(\"fp-contract=off\")\n#endif\n";
+  }
+  static std::string no_contraction_end() {
+    return "#if defined(__clang__)\n#pragma float_control(pop)\n#elif defined(__GNUC__)\n#pragma GCC pop_options\n#endif\n";
   }
 
   const ParamDecl* param_decl(const std::string& name) const {
@@ -227,8 +240,9 @@ class CppEmitter {
     return out.str();
   }
 
-  // The arguments of op instruction i, splatting a scalar read for a vector
-  // into a temporary first (`prefix` names registers: "u." or "").
+  // Op instruction i, with each scalar that it reads for a vector splatted
+  // into a temporary of its own first; in the uniform pass registers are
+  // fields of `u`.
   std::string op_statement(std::size_t i, const std::string& lane, const std::string& indent,
                            bool uniform_pass) const {
     const IrInstr& instr = ir_.code[i];
@@ -239,7 +253,7 @@ class CppEmitter {
       std::string name = (uniform_pass ? "u." : "") + value_name(value);
       const int wanted = component_count(argument_type(instr, a));
       if (components(value) < wanted) {
-        const std::string splat = name.substr(uniform_pass ? 2 : 0) + "_x" + std::to_string(wanted);
+        const std::string splat = "splat" + std::to_string(i) + "_" + std::to_string(a);
         out << indent << "const " << lane << " " << splat << "[" << wanted << "] = {"
             << list(std::vector<int>(static_cast<std::size_t>(wanted), 0), [&](int) { return name + "[0]"; })
             << "};\n";

@@ -11,7 +11,9 @@
 #include <sstream>
 
 #include "pipeline/compile_graph.h"
+#include "support/differential_samples.h"
 #include "support/gallery.h"
+#include "support/random_graph.h"
 #include "support/test_files.h"
 #include "interp/interpreter.h"
 #include "ir/verify.h"
@@ -23,67 +25,15 @@
 namespace shadetree {
 namespace {
 
-// 517 samples: two interpreter blocks and a tail, and a tail for every
-// vector width. Every varying global has a plane.
-struct SampleSet {
-  static constexpr std::size_t count = 517;
-  SampleBuffers input{count, GlobalSet().set()};
-  UniformInputs uniforms;
-
-  SampleSet() {
-    std::mt19937 random(1989);
-    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-    auto store_unit_vector = [&](GlobalId id, std::size_t i) {
-      const float v[3] = {unit(random), unit(random), unit(random) + 2.0f};
-      const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      for (int c = 0; c < 3; ++c) input.plane(id, c)[i] = v[c] / length;
-    };
-    for (std::size_t i = 0; i < count; ++i) {
-      float p[3];
-      switch (i % 5) {
-        case 0:  // lattice points
-          for (float& c : p) c = std::round(unit(random) * 4.0f);
-          break;
-        case 1:  // negative coordinates
-          for (float& c : p) c = -std::fabs(unit(random)) * 7.0f;
-          break;
-        case 2:  // far from the origin
-          for (float& c : p) c = 1e4f + unit(random) * 3.0f;
-          break;
-        default:
-          for (float& c : p) c = unit(random) * 3.0f;
-      }
-      for (int c = 0; c < 3; ++c) input.plane(GlobalId::P, c)[i] = p[c];
-      for (GlobalId id : {GlobalId::N, GlobalId::I, GlobalId::L}) store_unit_vector(id, i);
-      for (int c = 0; c < 2; ++c) input.plane(GlobalId::uv, c)[i] = (unit(random) + 1.0f) / 2.0f;
-      const float widths[] = {0.0f, 0.001f, 0.01f, 0.1f, 0.7f};
-      input.plane(GlobalId::filter_width)[i] = widths[i % 5];
-      input.plane(GlobalId::density)[i] = (unit(random) + 1.0f) / 2.0f;
-      input.plane(GlobalId::surface)[i] = static_cast<float>(i % 4);
-    }
-    uniforms.set(GlobalId::time, 0.75f);
-    uniforms.set(GlobalId::frame, 18.0f);
-    uniforms.set(GlobalId::step_size, 0.01f);
-    for (int c = 0; c < 3; ++c) uniforms.set(GlobalId::light_color, 1.0f - 0.1f * c, c);
-  }
-
-  float P(int component, std::size_t i) const { return input.inputs().plane(GlobalId::P, component)[i]; }
-};
-
-const SampleSet& samples() {
-  static const SampleSet set;
-  return set;
-}
-
-std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params) {
-  const OutputLayout& layout = kernel.outputs();
-  std::vector<std::vector<float>> results(static_cast<std::size_t>(layout.plane_count),
-                                          std::vector<float>(SampleSet::count, -12345.0f));
-  std::vector<float*> pointers;
-  for (auto& plane : results) pointers.push_back(plane.data());
-  kernel.bind(params.data(), samples().uniforms)->run(samples().input.inputs(), pointers.data(), SampleSet::count);
-  return results;
-}
+using testing::attributes_for;
+using testing::header;
+using testing::preamble;
+using testing::RandomGraph;
+using testing::run;
+using testing::samples;
+using testing::SampleSet;
+using testing::three_component_outputs;
+using testing::to_color;
 
 // The backends run the same semantics with the same operations in the
 // same order (and no contraction into fused multiply-adds), so they agree
@@ -143,54 +93,6 @@ INSTANTIATE_TEST_SUITE_P(Gallery, GalleryDifferential, ::testing::ValuesIn(testi
                          [](const auto& info) { return testing::gallery_graph_name(info.param); });
 
 // --- every node, over every type it accepts ------------------------------
-
-// Varying sources of each type, built from the inputs.
-const char* const preamble = R"(
-  {"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
-  {"id": "float_a", "op": "add", "in": {"a": "s.x", "b": "s.y"}},
-  {"id": "float_b", "op": "mul", "in": {"a": "s.z", "b": 0.37}},
-  {"id": "float_c", "op": "sub", "in": {"a": "s.y", "b": 0.5}},
-  {"id": "vec2_a", "op": "vec2", "in": {"x": "s.x", "y": "s.z"}},
-  {"id": "vec2_b", "op": "uv"},
-  {"id": "vec3_a", "op": "P"}, {"id": "vec3_b", "op": "N"},
-  {"id": "color_a", "op": "to_color", "in": {"v": "p"}},
-  {"id": "color_b", "op": "to_color", "in": {"v": "vec3_b"}},
-  {"id": "bool_a", "op": "lt", "in": {"a": "s.x", "b": "s.y"}},
-  {"id": "fw", "op": "filter_width"},
-  {"id": "vec3_c", "op": "I"}, {"id": "vec3_d", "op": "L"}, {"id": "color_c", "op": "light_color"},
-  {"id": "object", "op": "surface"}, {"id": "float_d", "op": "add", "in": {"a": "object", "b": "s.x"}})";
-
-// A surface graph: its contract has three 3-component outputs (color,
-// emission, normal) and three float ones, enough for any node's outputs.
-const char* const header = R"({"format": "shadetree-graph", "version": 1, "kind": "surface", )";
-const char* const three_component_outputs[] = {"color", "emission", "normal"};
-
-// Nodes that turn value `id` of `type` into a color named `as`, so that it
-// can be an output.
-std::string to_color(const std::string& id, Type type, const std::string& as) {
-  switch (type) {
-    case Type::bool_:
-      return R"(, {"id": ")" + as + R"(", "op": "select", "in": {"cond": ")" + id + R"(", "then": 1, "else": 0}})";
-    case Type::vec2:
-      return R"(, {"id": ")" + as + R"(_s", "op": "split", "in": {"v": ")" + id + R"("}}, {"id": ")" + as +
-             R"(", "op": "color", "in": {"r": ")" + as + R"(_s.x", "g": ")" + as + R"(_s.y"}})";
-    default:
-      return R"(, {"id": ")" + as + R"(", "op": "mul", "in": {"a": ")" + id + R"(", "b": 1}})";
-  }
-}
-
-std::string attributes_for(OpId op) {
-  switch (op) {
-    case OpId::spline: return R"(, "basis": "catmull-rom", "knots": [[1,0,0],[0.9,0.5,0.1],[0.2,0.8,0.3],[0,0,1],[0.5,0.5,0.5]])";
-    case OpId::color_table: return R"(, "entries": [[1,0,0],[0,1,0],[0,0,1],[1,1,0]])";
-    case OpId::table1d: return R"(, "values": [0, 0.8, 0.2, 1, 0.4], "domain": [-2, 3])";
-    case OpId::table2d: return R"(, "values": [[0, 1, 0.5], [0.2, 0.9, 0.1]])";
-    case OpId::image: return R"(, "file": "5x3x3.png")";
-    case OpId::mesh_distance: case OpId::mesh_closest: return R"(, "file": "ball.obj", "resolution": 16)";
-    case OpId::noise: case OpId::turbulence: return R"(, "seed": 7)";
-    default: return "";
-  }
-}
 
 // A source for an input of type `type`; `which` picks among alternatives.
 std::string source_for(Type type, const std::string& port, int which) {
@@ -338,83 +240,6 @@ TEST(LimitsDifferential, HugeKernelsAgree) {
 }
 
 // --- random well-typed graphs ---------------------------------------------
-
-// Grows a graph one node at a time from a pool of typed values, picking ops
-// from every family (conditionals included) and wiring each input from a
-// value of an acceptable type.
-class RandomGraph {
- public:
-  explicit RandomGraph(std::uint32_t seed) : random_(seed) {}
-
-  std::string generate(int node_count) {
-    pool_ = {{"float_a", Type::float_}, {"float_b", Type::float_}, {"float_c", Type::float_},
-             {"vec2_a", Type::vec2},    {"vec2_b", Type::vec2},    {"vec3_a", Type::vec3},
-             {"vec3_b", Type::vec3},    {"color_a", Type::color},  {"color_b", Type::color},
-             {"bool_a", Type::bool_},   {"fw", Type::float_},      {"vec3_c", Type::vec3},
-             {"vec3_d", Type::vec3},    {"color_c", Type::color},  {"float_d", Type::float_}};
-    std::ostringstream nodes;
-    nodes << preamble;
-    const auto ops = all_ops();
-    for (int n = 0; n < node_count; ++n) {
-      const OpDef& op = ops[pick(ops.size())];
-      if (op.family == OpFamily::input || op.id == OpId::split || !op.kinds.contains(GraphKind::surface)) continue;
-      Type instance = Type::float_;
-      if (op.generic == GenericSet::numeric && !op.type_from_knots) instance = pick_of({Type::float_, Type::vec2, Type::vec3, Type::color});
-      if (op.generic == GenericSet::vectors) instance = pick_of({Type::vec2, Type::vec3, Type::color});
-      const std::string id = "n" + std::to_string(n);
-      nodes << R"(, {"id": ")" << id << R"(", "op": ")" << op.name << R"(", "in": {)";
-      std::vector<std::string> wires;
-      for (std::size_t i = 0; i < op.inputs.size(); ++i) {
-        const PortSpec& port = op.inputs[i];
-        const Type type = port.rule == TypeRule::generic ? instance : port.type;
-        // Generic inputs take exactly T, so that T is what the checker infers.
-        wires.push_back(wire(type, port.name, port.rule == TypeRule::generic));
-        nodes << (i ? ", " : "") << '"' << port.name << "\": " << wires.back();
-      }
-      nodes << "}" << attributes_for(op.id) << "}";
-      Type output = op.outputs[0].rule == TypeRule::generic ? instance : op.outputs[0].type;
-      if (op.id == OpId::spline || op.id == OpId::color_table) output = Type::color;
-      pool_.push_back({id, output});
-      // Every other `if` is nested in one more on the same condition, the
-      // shape that once broke the interpreter's lane lists.
-      if (op.id == OpId::if_ && pick(2) == 0) {
-        nodes << R"(, {"id": ")" << id << R"(_outer", "op": "if", "in": {"cond": )" << wires[0] << R"(, "then": ")"
-              << id << R"(", "else": )" << wire(instance, "else", true) << "}}";
-        pool_.push_back({id + "_outer", output});
-      }
-    }
-    std::ostringstream outputs;
-    for (int k = 0; k < 3; ++k) {
-      const auto& [id, type] = pool_[pool_.size() - 1 - static_cast<std::size_t>(k) * 3];
-      nodes << to_color(id, type, "out" + std::to_string(k));
-      outputs << (k ? ", " : "") << '"' << three_component_outputs[k] << "\": \"out" << k << '"';
-    }
-    for (const char* name : {"specular", "roughness", "opacity"})
-      outputs << ", \"" << name << "\": " << wire(Type::float_, name, true);
-    return header + std::string(R"("nodes": [)") + nodes.str() + "], \"outputs\": {" + outputs.str() + "}}";
-  }
-
- private:
-  std::size_t pick(std::size_t count) { return std::uniform_int_distribution<std::size_t>(0, count - 1)(random_); }
-  Type pick_of(std::initializer_list<Type> types) { return *(types.begin() + pick(types.size())); }
-
-  // A recent value that converts to `type` (floats splat into vectors), or
-  // a literal where the type needs one.
-  std::string wire(Type type, const std::string& port, bool exact) {
-    if (type == Type::int_) return port == "iterations" ? "24" : std::to_string(1 + pick(6));
-    if (port == "filter_width") return "\"fw\"";
-    std::vector<std::string> candidates;
-    for (const auto& [id, value_type] : pool_)
-      if (value_type == type || (!exact && value_type == Type::float_ && is_vector(type))) candidates.push_back(id);
-    if (candidates.empty()) return type == Type::bool_ ? "true" : "0.5";
-    // Prefer recent values so that graphs grow deep, not wide.
-    const std::size_t recent = std::min<std::size_t>(candidates.size(), 6);
-    return '"' + candidates[candidates.size() - 1 - pick(recent)] + '"';
-  }
-
-  std::mt19937 random_;
-  std::vector<std::pair<std::string, Type>> pool_;
-};
 
 TEST(RandomGraphDifferential, HundredsOfRandomGraphsAgree) {
   int compared = 0;
