@@ -348,6 +348,28 @@ TEST_F(Cli, EmitShowsTheOptimizedGraphAndVectorCode) {
   EXPECT_EQ(run.status, 2);
 }
 
+TEST_F(Cli, EmitCppWritesAHeaderOrSaysWhyNot) {
+  const std::string header = (directory_ / "kernel.h").string();
+  CommandResult run = shadetree("emit " + gallery + "marble.json --cpp --name stone -o " + header);
+  ASSERT_EQ(run.status, 0) << run.err;
+  std::ifstream file(header);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  for (const char* part : {"struct stone_params", "int octaves = 8;", "struct stone_inputs", "inline void stone_run("})
+    EXPECT_NE(text.find(part), std::string::npos) << part;
+  run = shadetree("emit " + gallery + "marble.json --cpp");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("inline void marble_run("), std::string::npos) << "the graph's name by default, on stdout";
+  run = shadetree("emit " + gallery + "marble.json --cpp --name 2x");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("C identifier"), std::string::npos) << run.err;
+  const std::string nowhere = (directory_ / "missing" / "kernel.h").string();
+  run = shadetree("emit " + gallery + "marble.json --cpp -o " + nowhere);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_FALSE(fs::exists(nowhere));
+}
+
 TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   const CommandResult run =
       shadetree("bench " + gallery + "checker_aa.json " + gallery + "spotted.json --size 32x32 --repetitions 1 --json");
