@@ -49,30 +49,33 @@ Result<LoadedGraph> compile_parsed(Result<Graph> parsed, const std::string& path
     const auto equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0)
       return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "--set expects NAME=VALUE, got \"" + assignment + "\""};
-    const std::string name = assignment.substr(0, equals);
-    std::string known;
-    for (std::size_t i = 0; i < graph->params.size(); ++i) {
-      const ParamDecl& param = graph->params[i];
-      known += (known.empty() ? "" : ", ") + param.name;
-      if (param.name != name) continue;
-      Result<std::vector<float>> value = parse_param_value(param, assignment.substr(equals + 1));
-      if (!value) {
-        Diagnostic error = value.error();
-        error.file = path;
-        return error;
-      }
-      std::copy(value->begin(), value->end(), loaded.params.begin() + loaded.ir.params[i].slot);
-      known.clear();
-      break;
+    if (Status set = set_param(loaded, assignment.substr(0, equals), assignment.substr(equals + 1)); !set) {
+      Diagnostic error = set.error();
+      error.file = path;
+      return error;
     }
-    if (!known.empty() || graph->params.empty())
-      return Diagnostic{ExitStatus::invalid_input, path, {}, {},
-                        "--set: unknown param \"" + name + "\" (params: " + (known.empty() ? "none" : known) + ")"};
   }
   return loaded;
 }
 
 }  // namespace
+
+Status set_param(LoadedGraph& loaded, const std::string& name, const std::string& value) {
+  const Graph& graph = *loaded.graph;
+  std::string known;
+  for (std::size_t i = 0; i < graph.params.size(); ++i) {
+    const ParamDecl& param = graph.params[i];
+    if (param.name != name) {
+      known += (known.empty() ? "" : ", ") + param.name;
+      continue;
+    }
+    Result<std::vector<float>> values = parse_param_value(param, value);
+    if (!values) return values.error();
+    std::copy(values->begin(), values->end(), loaded.params.begin() + loaded.ir.params[i].slot);
+    return success();
+  }
+  return invalid_input("--set: unknown param \"" + name + "\" (params: " + (known.empty() ? "none" : known) + ")");
+}
 
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
                                      const PassObserver& observe, const GraphFiles& files) {

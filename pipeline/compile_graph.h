@@ -21,6 +21,10 @@ struct LoadedGraph {
   int instructions_before_optimization = 0;
 };
 
+// Sets param `name` of the uniform block to `value`, written as for --set
+// ("14", "0.2,0.4,0.8", "true"), checked against its type and range.
+Status set_param(LoadedGraph& loaded, const std::string& name, const std::string& value);
+
 // `assignments` are NAME=VALUE strings (shadetree's --set). `observe` sees
 // the program after lowering ("lower") and after each optimizer pass; in
 // debug builds every one of those programs is also verified (ir/verify.h).

@@ -1,5 +1,6 @@
 // Support modules loaded on first use from the folder of the running
-// executable (libshadetree_image_io.so, libshadetree_vdb.so): each wraps a
+// executable or of libshadetree.so (libshadetree_image_io.so,
+// libshadetree_vdb.so; installed, from lib/ beside bin/): each wraps a
 // library whose dynamic linking would cost every command's start-up
 // (OpenImageIO pulls in some 250 shared libraries, OpenVDB a few dozen
 // milliseconds), behind a small C interface.

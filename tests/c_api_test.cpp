@@ -1,0 +1,130 @@
+// The C API: loading, errors as statuses with one-line messages, params,
+// kernel runs over planes (against the interpreter through the pipeline),
+// texture renders and image writes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <vector>
+
+#include "api/shadetree.h"
+#include "interp/interpreter.h"
+#include "pipeline/compile_graph.h"
+#include "render/image_output.h"
+
+namespace shadetree {
+namespace {
+
+const std::string marble = SHADETREE_SOURCE_DIR "/graphs/marble.json";
+
+struct GraphHandle {
+  shadetree_graph* graph = nullptr;
+  ~GraphHandle() { shadetree_free(graph); }
+};
+
+bool one_line(const char* message) { return std::string(message).find('\n') == std::string::npos; }
+
+TEST(CApi, LoadFailuresAreStatusesWithOneLineMessages) {
+  GraphHandle handle;
+  EXPECT_EQ(shadetree_load("/no/such/graph.json", SHADETREE_JIT, &handle.graph), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(handle.graph, nullptr);
+  EXPECT_NE(std::string(shadetree_last_error()).find("/no/such/graph.json"), std::string::npos);
+  EXPECT_EQ(shadetree_load_text("{\"format\": ", "broken.json", SHADETREE_JIT, &handle.graph), SHADETREE_INVALID_INPUT);
+  EXPECT_NE(std::string(shadetree_last_error()).find("broken.json"), std::string::npos);
+  EXPECT_TRUE(one_line(shadetree_last_error()));
+  EXPECT_EQ(shadetree_load(nullptr, SHADETREE_JIT, &handle.graph), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(shadetree_load(marble.c_str(), static_cast<shadetree_backend>(7), &handle.graph), SHADETREE_INVALID_INPUT);
+  ASSERT_EQ(shadetree_load(marble.c_str(), SHADETREE_JIT, &handle.graph), SHADETREE_OK) << shadetree_last_error();
+  EXPECT_STREQ(shadetree_last_error(), "");
+  EXPECT_STREQ(shadetree_kind(handle.graph), "texture");
+}
+
+TEST(CApi, ParamsAreCheckedAgainstTheirTypeAndRange) {
+  GraphHandle handle;
+  ASSERT_EQ(shadetree_load(marble.c_str(), SHADETREE_INTERPRETER, &handle.graph), SHADETREE_OK);
+  EXPECT_EQ(shadetree_set_param(handle.graph, "scale", "9"), SHADETREE_OK) << shadetree_last_error();
+  EXPECT_EQ(shadetree_set_param(handle.graph, "scale", "-5"), SHADETREE_INVALID_INPUT);
+  EXPECT_NE(std::string(shadetree_last_error()).find("scale"), std::string::npos);
+  EXPECT_EQ(shadetree_set_param(handle.graph, "scael", "9"), SHADETREE_INVALID_INPUT);
+  EXPECT_NE(std::string(shadetree_last_error()).find("unknown param"), std::string::npos);
+  EXPECT_EQ(shadetree_set_param(handle.graph, "octaves", "2.5"), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(shadetree_set_param(handle.graph, nullptr, "1"), SHADETREE_INVALID_INPUT);
+}
+
+// shadetree_run with scale=9 computes what the pipeline's interpreter
+// computes with --set scale=9, for both backends.
+TEST(CApi, RunsTheKernelOverPlanes) {
+  const std::size_t count = 21;
+  std::vector<std::vector<float>> inputs(static_cast<std::size_t>(shadetree_input_plane_count()));
+  std::vector<const float*> input_pointers(inputs.size(), nullptr);
+  for (int c = 0; c < 3; ++c) {
+    const int plane = shadetree_input_plane("P", c);
+    ASSERT_GE(plane, 0);
+    for (std::size_t i = 0; i < count; ++i) inputs[plane].push_back(0.13f * static_cast<float>(i) - 0.4f * c);
+    input_pointers[plane] = inputs[plane].data();
+  }
+  const int width = shadetree_input_plane("filter_width", 0);
+  inputs[width].assign(count, 0.002f);
+  input_pointers[width] = inputs[width].data();
+  EXPECT_EQ(shadetree_input_plane("P", 3), -1);
+  EXPECT_EQ(shadetree_input_plane("time", 0), -1) << "uniform globals have no plane";
+  EXPECT_EQ(shadetree_input_plane("Q", 0), -1);
+
+  Result<LoadedGraph> loaded = load_and_compile(marble, {"scale=9"});
+  ASSERT_TRUE(loaded.ok());
+  auto reference = make_interpreted_kernel(loaded->ir);
+  SampleInputs planes;
+  for (std::size_t i = 0; i < inputs.size(); ++i) planes.planes[i] = input_pointers[i];
+  std::vector<std::vector<float>> expected(3, std::vector<float>(count));
+  std::vector<float*> expected_pointers = {expected[0].data(), expected[1].data(), expected[2].data(), nullptr};
+  reference->bind(loaded->params.data(), {})->run(planes, expected_pointers.data(), count);
+
+  for (shadetree_backend backend : {SHADETREE_JIT, SHADETREE_INTERPRETER}) {
+    GraphHandle handle;
+    ASSERT_EQ(shadetree_load(marble.c_str(), backend, &handle.graph), SHADETREE_OK);
+    ASSERT_EQ(shadetree_set_param(handle.graph, "scale", "9"), SHADETREE_OK);
+    ASSERT_EQ(shadetree_output_plane_count(handle.graph), 4);  // color and alpha
+    EXPECT_EQ(shadetree_output_plane(handle.graph, "alpha", 0), 3);
+    EXPECT_EQ(shadetree_output_plane(handle.graph, "density", 0), -1) << "not a texture output";
+    std::vector<std::vector<float>> outputs(3, std::vector<float>(count, -1.0f));
+    std::vector<float*> output_pointers(4, nullptr);
+    for (int c = 0; c < 3; ++c) output_pointers[shadetree_output_plane(handle.graph, "color", c)] = outputs[c].data();
+    ASSERT_EQ(shadetree_run(handle.graph, 0.0f, input_pointers.data(), output_pointers.data(), count), SHADETREE_OK)
+        << shadetree_last_error();
+    EXPECT_EQ(outputs, expected) << "backend " << backend;
+    // A plane the graph reads, missing.
+    std::vector<const float*> missing = input_pointers;
+    missing[shadetree_input_plane("P", 1)] = nullptr;
+    EXPECT_EQ(shadetree_run(handle.graph, 0.0f, missing.data(), output_pointers.data(), count), SHADETREE_INVALID_INPUT);
+    EXPECT_NE(std::string(shadetree_last_error()).find("NULL"), std::string::npos);
+  }
+}
+
+TEST(CApi, RendersTexturesAndWritesImages) {
+  GraphHandle handle;
+  ASSERT_EQ(shadetree_load(marble.c_str(), SHADETREE_JIT, &handle.graph), SHADETREE_OK);
+  std::vector<float> rgba(4 * 16 * 8, -1.0f);
+  ASSERT_EQ(shadetree_render_texture(handle.graph, 16, 8, 0.0f, rgba.data()), SHADETREE_OK) << shadetree_last_error();
+  for (std::size_t i = 3; i < rgba.size(); i += 4) EXPECT_EQ(rgba[i], 1.0f) << "alpha 1 where the graph has none";
+  EXPECT_GT(rgba[0], 0.0f);
+  EXPECT_EQ(shadetree_render_texture(handle.graph, 0, 8, 0.0f, rgba.data()), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(shadetree_render_texture(handle.graph, 1 << 20, 8, 0.0f, rgba.data()), SHADETREE_INVALID_INPUT);
+
+  const std::filesystem::path png = std::filesystem::temp_directory_path() / "shadetree-c-api-test.png";
+  ASSERT_EQ(shadetree_write_image(png.c_str(), rgba.data(), 16, 8, 4), SHADETREE_OK) << shadetree_last_error();
+  Result<Image> image = read_image(png.string());
+  ASSERT_TRUE(image.ok());
+  EXPECT_EQ(image->width, 16);
+  std::filesystem::remove(png);
+  EXPECT_EQ(shadetree_write_image("/no/such/folder/out.png", rgba.data(), 16, 8, 4), SHADETREE_FAILURE);
+  EXPECT_EQ(shadetree_write_image("out.tiff", rgba.data(), 16, 8, 4), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(shadetree_write_image(png.c_str(), rgba.data(), 16, 8, 5), SHADETREE_INVALID_INPUT);
+
+  GraphHandle surface;
+  ASSERT_EQ(shadetree_load(SHADETREE_SOURCE_DIR "/graphs/marble_vase.json", SHADETREE_JIT, &surface.graph), SHADETREE_OK)
+      << shadetree_last_error();
+  EXPECT_EQ(shadetree_render_texture(surface.graph, 16, 8, 0.0f, rgba.data()), SHADETREE_INVALID_INPUT);
+  EXPECT_NE(std::string(shadetree_last_error()).find("surface graph"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shadetree
