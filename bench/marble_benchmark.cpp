@@ -1,5 +1,6 @@
-// graphs/marble.json three ways, one thread each, on the same 256x256
-// samples: the interpreter, the JIT, and the hand-written scalar C++
+// graphs/marble.json five ways, one thread each, on the same 256x256
+// samples: the interpreter, the JIT, the C++ of `emit --cpp` built by g++
+// and by clang++ (-O2 -march=native), and the hand-written scalar C++
 // yardstick (-O3 -march=native). Run
 //   build/shadetree_bench --benchmark_filter=marble_ --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // and compare items_per_second (samples per second) of the medians.
@@ -7,6 +8,7 @@
 
 #include <cmath>
 
+#include "bench/marble_emitted.h"
 #include "bench/marble_yardstick.h"
 #include "pipeline/compile_graph.h"
 #include "interp/interpreter.h"
@@ -67,17 +69,25 @@ void marble_jit(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * side * side);
 }
 
-void marble_yardstick(benchmark::State& state) {
+using PlaneFunction = void(const float*, const float*, const float*, const float*, float*, float*, float*,
+                           std::size_t);
+
+void run_planes(benchmark::State& state, PlaneFunction* function) {
   MarbleSamples& s = samples();
   for (auto _ : state)
-    yardstick::marble(s.input.plane(GlobalId::P, 0), s.input.plane(GlobalId::P, 1), s.input.plane(GlobalId::P, 2),
-                      s.input.plane(GlobalId::filter_width), s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(),
-                      side * side);
+    function(s.input.plane(GlobalId::P, 0), s.input.plane(GlobalId::P, 1), s.input.plane(GlobalId::P, 2),
+             s.input.plane(GlobalId::filter_width), s.rgb[0].data(), s.rgb[1].data(), s.rgb[2].data(), side * side);
   state.SetItemsProcessed(state.iterations() * side * side);
 }
 
+void marble_yardstick(benchmark::State& state) { run_planes(state, yardstick::marble); }
+void marble_emitted_gcc(benchmark::State& state) { run_planes(state, emitted::marble_gcc); }
+void marble_emitted_clang(benchmark::State& state) { run_planes(state, emitted::marble_clang); }
+
 BENCHMARK(marble_interpreter)->Unit(benchmark::kMillisecond);
 BENCHMARK(marble_jit)->Arg(0)->Arg(8)->Arg(4)->Unit(benchmark::kMillisecond);  // 0: host width
+BENCHMARK(marble_emitted_gcc)->Unit(benchmark::kMillisecond);
+BENCHMARK(marble_emitted_clang)->Unit(benchmark::kMillisecond);
 BENCHMARK(marble_yardstick)->Unit(benchmark::kMillisecond);
 
 }  // namespace
