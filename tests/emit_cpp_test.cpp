@@ -178,5 +178,29 @@ TEST_F(EmitCpp, GalleryAndRandomGraphsAgreeWithTheInterpreter) {
     for (const char* flags : {"", "-DSHADETREE_NO_SIMD"}) compare(compiler, flags);
 }
 
+// An image of 1024 x 1024 RGBA pixels is 4 M floats of data: emit says so
+// and names the node instead of writing 50 MB of source.
+TEST(EmitCppLimits, RefusesDataTooLargeToEmitNamingTheNode) {
+  Result<LoadedGraph> loaded = compile_graph_text(
+      testing::graph_text(R"({"id": "uv", "op": "uv"}, {"id": "photo", "op": "image", "in": {"uv": "uv"},
+                                "file": "1024x1024x4.png"})",
+                          R"("color": "photo")"),
+      "big.json", {}, {}, testing::test_files());
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> source = emit_cpp(*loaded->graph, loaded->ir, loaded->params, "big");
+  ASSERT_FALSE(source.ok());
+  EXPECT_EQ(source.error().node, "photo");
+  EXPECT_EQ(source.error().file, "big.json");
+  EXPECT_NE(source.error().message.find("too many to emit"), std::string::npos) << source.error().message;
+}
+
+TEST(EmitCppNames, CIdentifiersFromAnyText) {
+  EXPECT_EQ(c_identifier("marble"), "marble");
+  EXPECT_EQ(c_identifier("my-graph v2"), "my_graph_v2");
+  EXPECT_EQ(c_identifier("2d"), "_2d");
+  EXPECT_EQ(c_identifier("float"), "float_");
+  EXPECT_EQ(c_identifier(""), "kernel");
+}
+
 }  // namespace
 }  // namespace shadetree
