@@ -13,7 +13,7 @@
 // (an array of 1 to 3 F) and unused arguments are null.
 #include "nodes/lane_vector.h"
 #include "nodes/op_id.h"
-#include "nodes/ops/all.h"
+#include "nodes/ops/evaluated.h"
 
 namespace shadetree {
 namespace {

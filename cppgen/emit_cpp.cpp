@@ -100,7 +100,7 @@ class CppEmitter {
     std::ostringstream out;
     out << "// " << name_ << ": the kernel of " << (graph_.file.empty() ? "a graph" : graph_.file)
         << ", written by `shadetree emit --cpp`.\n"
-        << "// Standalone C++20 (the standard library only). Its SIMD width follows the target it is\n"
+        << "// Standalone C++17 (the standard library only). Its SIMD width follows the target it is\n"
         << "// compiled for (16 lanes with AVX-512, 8 with AVX, 4 with SSE2 or NEON); define\n"
         << "// SHADETREE_NO_SIMD for one sample at a time. It computes what shadetree's interpreter\n"
         << "// computes, with the same operations (multiplies and adds are never fused).\n//\n"

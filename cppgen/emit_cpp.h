@@ -11,8 +11,7 @@
 //                 std::size_t count)
 //
 // The op semantics are the library's own headers (cppgen/library_source.h),
-// so the emitted code computes what the interpreter computes. It needs
-// C++20, as those headers do.
+// so the emitted code computes what the interpreter computes. It is C++17.
 #pragma once
 
 #include <string>

@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "interp/exec_context.h"
-#include "nodes/ops/all.h"
+#include "nodes/ops/evaluated.h"
 
 namespace shadetree::interp {
 namespace {

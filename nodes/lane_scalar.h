@@ -8,9 +8,9 @@
 // semantics, so both compute the same operations in the same order.
 #pragma once
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace shadetree::lanes {
 
@@ -35,8 +35,17 @@ inline std::int32_t to_int(float x) { return static_cast<std::int32_t>(x); }
 inline float to_float(std::int32_t i) { return static_cast<float>(i); }
 
 // The bits of an IEEE float and back, for exponent arithmetic.
-inline std::int32_t to_bits(float x) { return std::bit_cast<std::int32_t>(x); }
-inline float from_bits(std::int32_t bits) { return std::bit_cast<float>(bits); }
+// (memcpy, not std::bit_cast: emit --cpp's output is C++17.)
+inline std::int32_t to_bits(float x) {
+  std::int32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+inline float from_bits(std::int32_t bits) {
+  float x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
 
 inline float gather(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { return table[index]; }

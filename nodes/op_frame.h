@@ -93,13 +93,16 @@ void for_components(int count, Body body) {
   if (count > 2) body(2);
 }
 
-// out[c] = f(in(0, c), ..., in(Arity - 1, c)) for each result component.
+// out[c] = f(in(0, c), ..., in(Arity - 1, c)) for one component.
+template <class X, class Function, int... A>
+void apply_to_component(const X& x, Function& f, int c, std::integer_sequence<int, A...>) {
+  x.out(c) = f(x.in(A, c)...);
+}
+
+// The same for each result component.
 template <int Arity, class X, class Function>
 void componentwise(const X& x, Function f) {
-  for_components(x.components(), [&](int c) {
-    [&]<int... A>(std::integer_sequence<int, A...>) { x.out(c) = f(x.in(A, c)...); }(
-        std::make_integer_sequence<int, Arity>{});
-  });
+  for_components(x.components(), [&](int c) { apply_to_component(x, f, c, std::make_integer_sequence<int, Arity>{}); });
 }
 
 template <class X>

@@ -1,7 +1,7 @@
 // Every library op's definition and semantics: the structs named in
 // SHADETREE_LIBRARY_OPS (nodes/op_id.h). Included by the bindings that are
-// generated from the op list: the registry, the interpreter's dispatch and
-// the JIT's op library.
+// generated from the op list: the registry, the interpreter's dispatch,
+// the JIT's op library and (as source) the C++ that emit --cpp writes.
 #pragma once
 
 #include "nodes/ops/arithmetic.h"
@@ -10,12 +10,3 @@
 #include "nodes/ops/soft_objects.h"
 #include "nodes/ops/splines.h"
 #include "nodes/ops/vectors.h"
-
-namespace shadetree::ops {
-
-// Ops with semantics over frames; the others (the input ops and split) are
-// lowered to other instructions.
-template <class Op, class Frame>
-concept Evaluated = requires(const Frame& x) { Op::evaluate(x); };
-
-}  // namespace shadetree::ops

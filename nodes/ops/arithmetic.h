@@ -21,7 +21,10 @@ namespace sem = semantics;
   struct name {                                                                                                \
     static constexpr int arity = arity_;                                                                       \
     static OpDef definition() { return definition_expression; }                                                \
-    static auto apply(auto... arguments) { return sem::function(arguments...); }                               \
+    template <class... A>                                                                                      \
+    static auto apply(A... arguments) {                                                                        \
+      return sem::function(arguments...);                                                                      \
+    }                                                                                                          \
     template <class X>                                                                                         \
     static void evaluate(const X& x) {                                                                         \
       frame::componentwise<arity>(x, [](auto... arguments) { return apply(arguments...); });                   \
