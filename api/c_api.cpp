@@ -55,7 +55,7 @@ shadetree_status guarded(Body body) {
   }
 }
 
-shadetree_status finish_load(Result<LoadedGraph> loaded, shadetree_backend backend, shadetree_graph** graph) {
+shadetree_status finish_load(Result<LoadedGraph> loaded, int backend, shadetree_graph** graph) {
   if (!loaded) return fail(loaded.error());
   auto result = std::make_unique<shadetree_graph>();
   result->loaded = std::move(*loaded);
@@ -70,7 +70,7 @@ shadetree_status finish_load(Result<LoadedGraph> loaded, shadetree_backend backe
   return succeed();
 }
 
-bool valid_backend(shadetree_backend backend) { return backend == SHADETREE_JIT || backend == SHADETREE_INTERPRETER; }
+bool valid_backend(int backend) { return backend == SHADETREE_JIT || backend == SHADETREE_INTERPRETER; }
 
 const GlobalDef* find_global(std::string_view name) {
   for (const GlobalDef& global : globals)
@@ -95,15 +95,14 @@ extern "C" {
 
 const char* shadetree_last_error(void) { return last_error.c_str(); }
 
-shadetree_status shadetree_load(const char* path, shadetree_backend backend, shadetree_graph** graph) {
+shadetree_status shadetree_load(const char* path, int backend, shadetree_graph** graph) {
   if (graph) *graph = nullptr;
   if (!path || !graph) return fail_with(ExitStatus::invalid_input, "shadetree_load: path and graph must not be NULL");
   if (!valid_backend(backend)) return fail_with(ExitStatus::invalid_input, "shadetree_load: unknown backend");
   return guarded([&] { return finish_load(load_and_compile(path, {}, {}, graph_files()), backend, graph); });
 }
 
-shadetree_status shadetree_load_text(const char* json, const char* name, shadetree_backend backend,
-                                     shadetree_graph** graph) {
+shadetree_status shadetree_load_text(const char* json, const char* name, int backend, shadetree_graph** graph) {
   if (graph) *graph = nullptr;
   if (!json || !graph)
     return fail_with(ExitStatus::invalid_input, "shadetree_load_text: json and graph must not be NULL");

@@ -47,12 +47,13 @@ typedef struct shadetree_graph shadetree_graph;
 const char* shadetree_last_error(void);
 
 /* Loads a graph file (files it names are read from its folder), checks and
- * compiles it. *graph is NULL on failure. */
-shadetree_status shadetree_load(const char* path, shadetree_backend backend, shadetree_graph** graph);
+ * compiles it for `backend` (a shadetree_backend; an int, so that any
+ * value a caller passes is defined and checked). *graph is NULL on
+ * failure. */
+shadetree_status shadetree_load(const char* path, int backend, shadetree_graph** graph);
 
 /* The same from JSON text; `name` stands for the file in messages. */
-shadetree_status shadetree_load_text(const char* json, const char* name, shadetree_backend backend,
-                                     shadetree_graph** graph);
+shadetree_status shadetree_load_text(const char* json, const char* name, int backend, shadetree_graph** graph);
 
 void shadetree_free(shadetree_graph* graph);
 

@@ -32,7 +32,7 @@ TEST(CApi, LoadFailuresAreStatusesWithOneLineMessages) {
   EXPECT_NE(std::string(shadetree_last_error()).find("broken.json"), std::string::npos);
   EXPECT_TRUE(one_line(shadetree_last_error()));
   EXPECT_EQ(shadetree_load(nullptr, SHADETREE_JIT, &handle.graph), SHADETREE_INVALID_INPUT);
-  EXPECT_EQ(shadetree_load(marble.c_str(), static_cast<shadetree_backend>(7), &handle.graph), SHADETREE_INVALID_INPUT);
+  EXPECT_EQ(shadetree_load(marble.c_str(), 7, &handle.graph), SHADETREE_INVALID_INPUT);
   ASSERT_EQ(shadetree_load(marble.c_str(), SHADETREE_JIT, &handle.graph), SHADETREE_OK) << shadetree_last_error();
   EXPECT_STREQ(shadetree_last_error(), "");
   EXPECT_STREQ(shadetree_kind(handle.graph), "texture");
