@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   add_emit_command(app, run);
   add_bench_command(app, run);
   add_voxelize_command(app, run);
+  add_serve_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

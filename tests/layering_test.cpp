@@ -16,7 +16,7 @@ namespace {
 // interp/, codegen/ and cppgen/ share a rank, so no backend sees another.
 const std::map<std::string, int> folder_rank = {
     {"nodes", 0}, {"graph", 1},    {"ir", 2},     {"interp", 3}, {"codegen", 3}, {"cppgen", 3},
-    {"jit", 4},   {"pipeline", 5}, {"render", 6}, {"cli", 7},      {"api", 7},
+    {"jit", 4},   {"pipeline", 5}, {"render", 6}, {"server", 7},   {"api", 7},    {"cli", 8},
 };
 
 TEST(Layering, IncludesPointDownThePipeline) {

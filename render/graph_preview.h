@@ -1,0 +1,24 @@
+// A graph's picture at any size through the driver of its kind, on its
+// render section's settings: a texture over its domain, a surface graph on
+// its scene (or the material ball), a volume through the ray marcher. For
+// the editor's previews, where every kind must render from one call.
+#pragma once
+
+#include "graph/diagnostic.h"
+#include "ir/kernel.h"
+#include "nodes/image.h"
+#include "pipeline/compile_graph.h"
+
+namespace shadetree {
+
+struct PreviewRequest {
+  int width = 256;
+  int height = 256;
+  float frame = 0.0f;
+  int threads = 0;  // 0: all cores
+};
+
+// RGB, or RGBA for a texture graph with an alpha output.
+Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, const PreviewRequest& request);
+
+}  // namespace shadetree

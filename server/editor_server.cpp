@@ -1,0 +1,314 @@
+#include "server/editor_server.h"
+
+#include <httplib.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "jit/jit_compiler.h"
+#include "jit/jit_kernel.h"
+#include "pipeline/compile_graph.h"
+#include "render/graph_files.h"
+#include "render/graph_preview.h"
+#include "render/output_file.h"
+#include "server/node_library.h"
+
+namespace shadetree {
+namespace {
+
+constexpr const char* token_cookie = "shadetree_token";
+
+std::string random_token() {
+  std::random_device device;
+  std::ostringstream token;
+  for (int i = 0; i < 4; ++i) {
+    char part[9];
+    std::snprintf(part, sizeof part, "%08x", static_cast<unsigned>(device()));
+    token << part;
+  }
+  return token.str();
+}
+
+// Equal strings, in time that does not depend on where they differ.
+bool same_secret(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  unsigned char difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) difference |= static_cast<unsigned char>(a[i] ^ b[i]);
+  return difference == 0;
+}
+
+void send_error(httplib::Response& response, int status, const std::string& message) {
+  response.status = status;
+  response.set_content(nlohmann::json{{"error", message}}.dump(), "application/json");
+}
+
+void send_json(httplib::Response& response, const nlohmann::json& json) {
+  response.set_content(json.dump(), "application/json");
+}
+
+nlohmann::json diagnostic_json(const Diagnostic& diagnostic) {
+  return {{"file", diagnostic.file},       {"node", diagnostic.node},         {"input", diagnostic.input},
+          {"message", diagnostic.message}, {"text", diagnostic.to_string()}};
+}
+
+// 400 for what the user can fix, 500 for what they cannot.
+int http_status(const Diagnostic& diagnostic) { return diagnostic.status == ExitStatus::invalid_input ? 400 : 500; }
+
+std::string cookie_value(const httplib::Request& request, const std::string& name) {
+  const std::string cookies = request.get_header_value("Cookie");
+  std::istringstream stream(cookies);
+  std::string part;
+  while (std::getline(stream, part, ';')) {
+    const std::size_t start = part.find_first_not_of(' ');
+    if (start == std::string::npos) continue;
+    part = part.substr(start);
+    if (part.rfind(name + "=", 0) == 0) return part.substr(name.size() + 1);
+  }
+  return {};
+}
+
+std::string content_type(const std::filesystem::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".html") return "text/html; charset=utf-8";
+  if (extension == ".js" || extension == ".mjs") return "text/javascript; charset=utf-8";
+  if (extension == ".css") return "text/css; charset=utf-8";
+  if (extension == ".json" || extension == ".map") return "application/json";
+  if (extension == ".png") return "image/png";
+  if (extension == ".svg") return "image/svg+xml";
+  return "application/octet-stream";
+}
+
+std::string read_file(const std::filesystem::path& path, bool* ok) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  *ok = static_cast<bool>(file) || file.eof();
+  return text.str();
+}
+
+// A query parameter as an integer within [low, high], or why not.
+Result<int> integer_parameter(const httplib::Request& request, const char* name, int fallback, int low, int high) {
+  if (!request.has_param(name)) return fallback;
+  const std::string text = request.get_param_value(name);
+  try {
+    std::size_t used = 0;
+    const long value = std::stol(text, &used);
+    if (used == text.size() && value >= low && value <= high) return static_cast<int>(value);
+  } catch (const std::exception&) {
+  }
+  return invalid_input(std::string(name) + " must be an integer from " + std::to_string(low) + " to " +
+                       std::to_string(high) + ", got \"" + text + "\"");
+}
+
+// Float pixels as bytes, clamped to [0, 1] as PNG output does; RGBA.
+std::string rgba_bytes(const Image& image) {
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  std::string bytes(pixels * 4, '\0');
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (int c = 0; c < 4; ++c) {
+      const float value = c < image.channels ? image.pixels[i * image.channels + c] : 1.0f;
+      const float clamped = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
+      bytes[4 * i + c] = static_cast<char>(static_cast<unsigned char>(clamped * 255.0f + 0.5f));
+    }
+  return bytes;
+}
+
+}  // namespace
+
+EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor)
+    : options_(options), graphs_(std::move(graphs)), editor_(std::move(editor)), server_(new httplib::Server) {}
+
+EditorServer::~EditorServer() { stop(); }
+
+Result<std::unique_ptr<EditorServer>> EditorServer::start(const ServeOptions& requested) {
+  ServeOptions options = requested;
+  if (options.token.empty()) options.token = random_token();
+  Result<ServedFolder> graphs = ServedFolder::open(options.folder);
+  if (!graphs) return graphs.error();
+  Result<ServedFolder> editor = ServedFolder::open(options.editor_folder);
+  if (!editor) {
+    Diagnostic error = editor.error();
+    error.message = "the editor's files are missing (run scripts/build.sh, which installs them with npm ci)";
+    return error;
+  }
+  std::unique_ptr<EditorServer> server(new EditorServer(options, std::move(*graphs), std::move(*editor)));
+  server->add_routes();
+  server->server_->set_payload_max_length(options.max_body);
+  if (options.port == 0) {
+    server->port_ = server->server_->bind_to_any_port(options.host);
+  } else if (server->server_->bind_to_port(options.host, options.port)) {
+    server->port_ = options.port;
+  }
+  if (server->port_ <= 0)
+    return Diagnostic{ExitStatus::failure, {}, {}, {},
+                      "cannot listen on " + options.host + ":" + std::to_string(options.port)};
+  httplib::Server* http = server->server_.get();
+  server->thread_ = std::thread([http] { http->listen_after_bind(); });
+  return server;
+}
+
+std::string EditorServer::url() const {
+  const std::string host = options_.host.find(':') != std::string::npos ? "[" + options_.host + "]" : options_.host;
+  return "http://" + host + ":" + std::to_string(port_) + "/?token=" + options_.token;
+}
+
+void EditorServer::wait() {
+  if (thread_.joinable()) thread_.join();
+}
+
+void EditorServer::stop() {
+  if (server_) server_->stop();
+  wait();
+}
+
+void EditorServer::add_routes() {
+  httplib::Server& http = *server_;
+
+  // Every request: the Host must be ours, and the token must come along.
+  http.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+    const std::string host = request.get_header_value("Host");
+    const std::string port = ":" + std::to_string(port_);
+    bool known_host = false;
+    for (const std::string& name : {options_.host, std::string("localhost"), std::string("127.0.0.1"),
+                                    std::string("[::1]"), "[" + options_.host + "]"})
+      known_host |= host == name + port;
+    if (!known_host) {
+      send_error(response, 403, "the Host header \"" + host + "\" is not this server's");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    std::string token = request.get_param_value("token");
+    if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
+    if (token.empty()) token = cookie_value(request, token_cookie);
+    if (!same_secret(token, options_.token)) {
+      send_error(response, 403, "missing or wrong token: open the URL shadetree serve printed");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+  http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
+    send_error(response, 500, "internal error");
+  });
+  http.set_error_handler([](const httplib::Request&, httplib::Response& response) {
+    if (!response.body.empty()) return;
+    const std::string message = response.status == 413 ? "request body too large"
+                                : response.status == 404 ? "no such endpoint"
+                                                         : "bad request";
+    send_error(response, response.status, message);
+  });
+
+  auto serve_file = [this](httplib::Response& response, const std::string& relative) {
+    Result<std::filesystem::path> path = editor_.resolve(relative);
+    bool ok = false;
+    const std::string content = path ? read_file(*path, &ok) : std::string();
+    if (!path || !ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such file");
+    response.set_content(content, content_type(*path).c_str());
+  };
+  http.Get("/", [this, serve_file](const httplib::Request&, httplib::Response& response) {
+    serve_file(response, "index.html");
+    response.set_header("Set-Cookie", std::string(token_cookie) + "=" + options_.token +
+                                          "; Path=/; HttpOnly; SameSite=Strict");
+    response.set_header("Cache-Control", "no-store");
+  });
+  http.Get(R"(/assets/(.+))", [serve_file](const httplib::Request& request, httplib::Response& response) {
+    serve_file(response, request.matches[1]);
+  });
+
+  http.Get("/api/nodes", [](const httplib::Request&, httplib::Response& response) {
+    send_json(response, node_library_json());
+  });
+  http.Get("/api/graphs", [this](const httplib::Request&, httplib::Response& response) {
+    send_json(response, {{"graphs", graphs_.graph_files()}});
+  });
+  http.Get("/api/stats", [this](const httplib::Request&, httplib::Response& response) {
+    send_json(response, {{"compiles", compiles_.load()}, {"previews", previews_.load()}});
+  });
+
+  // The graph file a request names, or the served folder's untitled.json.
+  auto graph_path = [this](const httplib::Request& request, bool named) -> Result<std::filesystem::path> {
+    if (!request.has_param("path")) {
+      if (named) return invalid_input("the request needs ?path=FILE.json");
+      return graphs_.path() / "untitled.json";
+    }
+    Result<std::filesystem::path> path = graphs_.resolve(request.get_param_value("path"));
+    if (path && path->extension() != ".json") return invalid_input("graph files end in .json");
+    return path;
+  };
+
+  http.Get("/api/graph", [graph_path](const httplib::Request& request, httplib::Response& response) {
+    Result<std::filesystem::path> path = graph_path(request, true);
+    if (!path) return send_error(response, 400, path.error().message);
+    bool ok = false;
+    const std::string text = read_file(*path, &ok);
+    if (!ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such graph file");
+    response.set_content(text, "application/json");
+  });
+
+  http.Put("/api/graph", [graph_path](const httplib::Request& request, httplib::Response& response) {
+    Result<std::filesystem::path> path = graph_path(request, true);
+    if (!path) return send_error(response, 400, path.error().message);
+    if (!nlohmann::json::accept(request.body)) return send_error(response, 400, "the body is not JSON");
+    Status written = write_then_rename(path->string(), [&](const std::string& temporary) -> std::string {
+      std::ofstream file(temporary, std::ios::binary);
+      file << request.body;
+      file.close();
+      return file ? "" : "cannot write " + temporary;
+    });
+    if (!written) return send_error(response, 500, written.error().message);
+    send_json(response, {{"saved", request.get_param_value("path")}});
+  });
+
+  http.Post("/api/check", [graph_path](const httplib::Request& request, httplib::Response& response) {
+    Result<std::filesystem::path> path = graph_path(request, false);
+    if (!path) return send_error(response, 400, path.error().message);
+    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, graph_files());
+    if (!loaded) return send_json(response, {{"ok", false}, {"error", diagnostic_json(loaded.error())}});
+    send_json(response, {{"ok", true}});
+  });
+
+  http.Post("/api/preview", [this, graph_path](const httplib::Request& request, httplib::Response& response) {
+    const auto start = std::chrono::steady_clock::now();
+    Result<std::filesystem::path> path = graph_path(request, false);
+    if (!path) return send_error(response, 400, path.error().message);
+    PreviewRequest preview;
+    for (auto [name, target] : {std::pair{"width", &preview.width}, std::pair{"height", &preview.height}}) {
+      Result<int> side = integer_parameter(request, name, 256, 1, options_.max_preview_side);
+      if (!side) return send_error(response, 400, side.error().message);
+      *target = *side;
+    }
+    Result<int> frame = integer_parameter(request, "frame", 0, 0, 1000000);
+    if (!frame) return send_error(response, 400, frame.error().message);
+    preview.frame = static_cast<float>(*frame);
+    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, graph_files());
+    if (!loaded) {
+      response.status = 422;
+      return send_json(response, {{"error", loaded.error().to_string()}, {"diagnostic", diagnostic_json(loaded.error())}});
+    }
+    // The kernel: found in the caches unless the program changed.
+    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 0);
+    if (!compiled) return send_error(response, 500, compiled.error().to_string());
+    if (compiled->cache == CacheHit::none) ++compiles_;
+    Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(loaded->ir);
+    if (!kernel) return send_error(response, 500, kernel.error().to_string());
+    Result<Image> image = render_preview(*loaded, **kernel, preview);
+    if (!image) return send_error(response, http_status(image.error()), image.error().to_string());
+    ++previews_;
+    response.set_content(rgba_bytes(*image), "application/octet-stream");
+    response.set_header("X-Width", std::to_string(image->width));
+    response.set_header("X-Height", std::to_string(image->height));
+    const char* kernel_source = compiled->cache == CacheHit::none     ? "compiled"
+                                : compiled->cache == CacheHit::memory ? "memory"
+                                                                      : "disk";
+    response.set_header("X-Kernel", kernel_source);
+    const double milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    response.set_header("X-Milliseconds", std::to_string(milliseconds));
+  });
+}
+
+}  // namespace shadetree

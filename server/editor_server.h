@@ -1,0 +1,80 @@
+// `shadetree serve`: a local HTTP server (cpp-httplib) for the browser
+// editor. It keeps the JIT and its kernel caches warm across requests, so
+// a param change re-renders without compiling, and serves the graph files
+// of one folder and the editor's own files.
+//
+// Security of a local server: it binds to 127.0.0.1 unless told otherwise;
+// every request must carry the session's random token (in the URL, as
+// Jupyter does, then as a SameSite cookie or the X-Shadetree-Token
+// header), so other users of the machine and other web pages cannot drive
+// it; requests whose Host header is not the server's own are refused
+// (DNS rebinding); only files inside the served folder are read or
+// written; bodies, graphs and previews are capped. Every refusal is a 4xx
+// with a one-line JSON error, {"error": "..."}.
+//
+// Endpoints (JSON unless said):
+//   GET  /                      the editor (sets the token cookie)
+//   GET  /assets/PATH           the editor's files
+//   GET  /api/nodes             the node library (server/node_library.h)
+//   GET  /api/graphs            {"graphs": [relative paths of the .json files]}
+//   GET  /api/graph?path=P      the file's text
+//   PUT  /api/graph?path=P      saves the body (JSON text) to P, through a temporary file
+//   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "error": {...}}
+//   POST /api/preview?path=P&width=W&height=H&frame=F
+//                               renders the body as graph P: W x H RGBA bytes, rows from the top;
+//                               headers X-Width, X-Height, X-Kernel (compiled | memory | disk),
+//                               X-Milliseconds
+//   GET  /api/stats             {"compiles": kernels compiled since start, "previews": N}
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "graph/diagnostic.h"
+#include "server/served_folder.h"
+
+namespace httplib {
+class Server;
+}
+
+namespace shadetree {
+
+struct ServeOptions {
+  std::string folder = ".";      // the graphs served
+  std::string editor_folder;     // the editor's files (index.html, editor.js, node_modules/)
+  std::string host = "127.0.0.1";
+  int port = 0;                  // 0: a free port
+  std::string token;             // empty: a random one
+  std::size_t max_body = std::size_t{4} << 20;
+  int max_preview_side = 2048;
+};
+
+class EditorServer {
+ public:
+  // Binds and starts serving on a thread of its own.
+  static Result<std::unique_ptr<EditorServer>> start(const ServeOptions& options);
+  ~EditorServer();
+
+  int port() const { return port_; }
+  const std::string& token() const { return options_.token; }
+  std::string url() const;  // what to open, token included
+  long compiles() const { return compiles_; }
+
+  void wait();  // until stop()
+  void stop();
+
+ private:
+  EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor);
+  void add_routes();
+
+  ServeOptions options_;
+  ServedFolder graphs_, editor_;
+  std::unique_ptr<httplib::Server> server_;
+  std::thread thread_;
+  int port_ = 0;
+  std::atomic<long> compiles_{0}, previews_{0};
+};
+
+}  // namespace shadetree

@@ -1,0 +1,33 @@
+// The folder `shadetree serve` serves: the graph files under it, and the
+// one rule for every path a request names, which must stay inside it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "graph/diagnostic.h"
+
+namespace shadetree {
+
+class ServedFolder {
+ public:
+  // `folder` must exist; it is made canonical (symlinks resolved).
+  static Result<ServedFolder> open(const std::string& folder);
+
+  // The file `relative` names inside the folder, or why not: an empty or
+  // absolute path, a ".." component, or a path that leaves the folder
+  // through a symlink. Files need not exist (a save may create one), but
+  // their folder must.
+  Result<std::filesystem::path> resolve(const std::string& relative) const;
+
+  // The .json files under the folder, relative to it, sorted.
+  std::vector<std::string> graph_files() const;
+
+  const std::filesystem::path& path() const { return root_; }
+
+ private:
+  std::filesystem::path root_;
+};
+
+}  // namespace shadetree
