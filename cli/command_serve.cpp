@@ -1,8 +1,10 @@
 // shadetree serve [DIR] [--port N] [--host H]: the browser editor for the
 // graphs of DIR, until interrupted (server/editor_server.h).
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
@@ -13,11 +15,11 @@ namespace shadetree {
 
 namespace {
 
-EditorServer* running = nullptr;
+// Set by SIGINT and SIGTERM; the main thread then stops the server (which
+// is not something a signal handler may do).
+volatile std::sig_atomic_t stop_requested = 0;
 
-extern "C" void stop_serving(int) {
-  if (running) running->stop();
-}
+extern "C" void request_stop(int) { stop_requested = 1; }
 
 // Installed beside the executable (share/shadetree/editor), else the
 // source tree's editor/ where the build put its packages.
@@ -38,13 +40,12 @@ ExitStatus serve(ServeOptions options) {
   options.editor_folder = editor_folder();
   Result<std::unique_ptr<EditorServer>> server = EditorServer::start(options);
   if (!server) return report(server.error());
-  running = server->get();
-  std::signal(SIGINT, stop_serving);
-  std::signal(SIGTERM, stop_serving);
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
   std::printf("shadetree editor for %s: open %s\n", options.folder.c_str(), (*server)->url().c_str());
   std::fflush(stdout);
-  (*server)->wait();
-  running = nullptr;
+  while (!stop_requested) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  (*server)->stop();
   return ExitStatus::ok;
 }
 

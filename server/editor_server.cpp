@@ -158,13 +158,9 @@ std::string EditorServer::url() const {
   return "http://" + host + ":" + std::to_string(port_) + "/?token=" + options_.token;
 }
 
-void EditorServer::wait() {
-  if (thread_.joinable()) thread_.join();
-}
-
 void EditorServer::stop() {
   if (server_) server_->stop();
-  wait();
+  if (thread_.joinable()) thread_.join();
 }
 
 void EditorServer::add_routes() {

@@ -62,8 +62,7 @@ class EditorServer {
   std::string url() const;  // what to open, token included
   long compiles() const { return compiles_; }
 
-  void wait();  // until stop()
-  void stop();
+  void stop();  // and waits for the server's thread
 
  private:
   EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor);

@@ -17,7 +17,8 @@ const [binary, source, screenshot] = process.argv.slice(2);
 const folder = mkdtempSync(join(tmpdir(), "shadetree-editor-test-"));
 copyFileSync(join(source, "graphs", "marble.json"), join(folder, "marble.json"));
 
-const server = spawn(binary, ["serve", folder], { stdio: ["ignore", "pipe", "inherit"] });
+const server = spawn(binary, ["serve", folder], { stdio: ["ignore", "pipe", "pipe"] });
+server.stderr.on("data", (data) => process.stderr.write(data));
 const url = await new Promise((resolve, reject) => {
   let out = "";
   server.stdout.on("data", (data) => {
@@ -113,7 +114,14 @@ try {
   // Chromium can linger on close; it is not what is tested.
   await Promise.race([browser.close(), new Promise((resolve) => setTimeout(resolve, 3000))]);
   browser.process()?.kill("SIGKILL");
+  const stopped = new Promise((resolve) => server.on("exit", resolve));
   server.kill("SIGTERM");
+  const timeout = new Promise((resolve) => setTimeout(() => resolve("timeout"), 5000));
+  if ((await Promise.race([stopped, timeout])) === "timeout") {
+    console.error("shadetree serve did not stop on SIGTERM within 5 s");
+    server.kill("SIGKILL");
+    failed = true;
+  }
   rmSync(folder, { recursive: true, force: true });
 }
 process.exit(failed ? 1 : 0);
