@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <vector>
 
 #include <llvm/ExecutionEngine/ObjectCache.h>
 #include <llvm/ExecutionEngine/Orc/CompileUtils.h>
@@ -31,6 +33,33 @@
 #include "nodes/noise_tables.h"
 
 namespace shadetree {
+
+namespace {
+std::atomic<long> resident_kernels{0};
+}  // namespace
+
+struct KernelCode {
+  KernelCode(std::string name, llvm::orc::ResourceTrackerSP tracker, const CompiledKernel& functions,
+             std::recursive_mutex& jit_mutex)
+      : name(std::move(name)), tracker(std::move(tracker)), bind(functions.bind), run(functions.run),
+        width(functions.width), jit_mutex(jit_mutex) {
+    ++resident_kernels;
+  }
+  // Removes the code under the JIT's lock, so a compile of the same
+  // program waits until these symbols are gone before defining them anew.
+  ~KernelCode() {
+    std::lock_guard lock(jit_mutex);
+    llvm::consumeError(tracker->remove());
+    --resident_kernels;
+  }
+  std::string name;
+  llvm::orc::ResourceTrackerSP tracker;
+  KernelBindFunction bind;
+  KernelRunFunction run;
+  int width;
+  std::recursive_mutex& jit_mutex;
+};
+
 namespace {
 
 bool host_has(const char* feature) {
@@ -134,11 +163,13 @@ class DiskObjectCache final : public llvm::ObjectCache {
   std::filesystem::path folder_;
 };
 
+// One LLJIT for the process. Never destroyed: kernels may outlive every
+// static object, and each removes its own code (KernelCode).
 class Jit {
  public:
   static Jit& instance() {
-    static Jit jit;
-    return jit;
+    static Jit* jit = new Jit;
+    return *jit;
   }
 
   Result<CompiledKernel> compile(const ShadeIR& ir, int width, const JitSettings& settings) {
@@ -147,6 +178,7 @@ class Jit {
     const auto start = std::chrono::steady_clock::now();
     const GatherStrategy gathers = effective_gathers(settings);
     std::string name = kernel_name(canonical_key(ir, width, gathers));
+    std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
     std::lock_guard lock(mutex_);
     auto elapsed = [&] {
       return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -154,31 +186,27 @@ class Jit {
     if (settings.cold) {
       name += "_cold" + std::to_string(++cold_compiles_);
       object_cache_->set_folder({});
-      return build_and_add(ir, width, name, gathers, elapsed);
+      Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);
+      if (!code) return code.error();
+      return compiled(*code, CacheHit::none, elapsed());
     }
-    if (auto found = kernels_.find(name); found != kernels_.end()) {
-      CompiledKernel kernel = found->second;
-      kernel.cache = CacheHit::memory;
-      kernel.compile_milliseconds = elapsed();
-      return kernel;
-    }
+    if (auto found = resident_.find(name); found != resident_.end())
+      if (std::shared_ptr<const KernelCode> code = found->second.lock()) {
+        keep_recent(code, evicted);
+        return compiled(code, CacheHit::memory, elapsed());
+      }
     const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
     object_cache_->set_folder(folder);
     if (!folder.empty()) {
       auto object = llvm::MemoryBuffer::getFile((folder / (name + ".o")).string());
       if (object) {
-        if (llvm::Error error = jit_->addObjectFile(std::move(*object))) {
-          llvm::consumeError(std::move(error));
-        } else if (Result<CompiledKernel> found = look_up(name, width)) {
-          found->compile_milliseconds = elapsed();
-          found->cache = CacheHit::disk;
-          return remember(name, *found);
-        }
+        Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
+        if (code) return admit(*code, CacheHit::disk, elapsed(), evicted);
       }
     }
-    Result<CompiledKernel> compiled = build_and_add(ir, width, name, gathers, elapsed);
-    if (!compiled) return compiled;
-    return remember(name, *compiled);
+    Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);
+    if (!code) return code.error();
+    return admit(*code, CacheHit::none, elapsed(), evicted);
   }
 
   Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
@@ -198,7 +226,7 @@ class Jit {
     return module;
   }
 
-  std::mutex& mutex() { return mutex_; }
+  std::recursive_mutex& mutex() { return mutex_; }
 
   Result<std::string> assembly(llvm::Module& module) {
     llvm::SmallString<0> text;
@@ -273,9 +301,8 @@ class Jit {
     jit_->getMainJITDylib().addGenerator(std::move(*process));
   }
 
-  template <class Elapsed>
-  Result<CompiledKernel> build_and_add(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
-                                       Elapsed elapsed) {
+  Result<std::shared_ptr<const KernelCode>> build_and_add(const ShadeIR& ir, int width, const std::string& name,
+                                                          GatherStrategy gathers) {
     auto context = std::make_unique<llvm::LLVMContext>();
     Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name, gathers);
     if (!module) return module.error();
@@ -287,24 +314,65 @@ class Jit {
       auto object = llvm::orc::SimpleCompiler(*fast_target_machine_)(**module);
       if (!object) return failure("JIT: " + error_text(object.takeError()));
       object_cache_->notifyObjectCompiled(module->get(), (*object)->getMemBufferRef());
-      if (llvm::Error error = jit_->addObjectFile(std::move(*object)))
-        return failure("JIT: " + error_text(std::move(error)));
-    } else if (llvm::Error error =
-                   jit_->addIRModule(llvm::orc::ThreadSafeModule(std::move(*module), std::move(context)))) {
-      return failure("JIT: " + error_text(std::move(error)));
+      return add_object(name, width, std::move(*object));
     }
-    Result<CompiledKernel> compiled = look_up(name, width);
-    if (compiled) compiled->compile_milliseconds = elapsed();
-    return compiled;
+    llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
+    if (llvm::Error error =
+            jit_->addIRModule(tracker, llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
+      return failure("JIT: " + error_text(std::move(error)));
+    return look_up(name, width, tracker);
   }
 
-  // The kernel's two functions, once its module or object is in the JIT.
-  Result<CompiledKernel> look_up(const std::string& name, int width) {
+  Result<std::shared_ptr<const KernelCode>> add_object(const std::string& name, int width,
+                                                       std::unique_ptr<llvm::MemoryBuffer> object) {
+    llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
+    if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object))) {
+      llvm::consumeError(tracker->remove());
+      return failure("JIT: " + error_text(std::move(error)));
+    }
+    return look_up(name, width, tracker);
+  }
+
+  // The kernel's two functions, once its module or object is in the JIT
+  // under `tracker`; a kernel that cannot be found is removed again.
+  Result<std::shared_ptr<const KernelCode>> look_up(const std::string& name, int width,
+                                                    const llvm::orc::ResourceTrackerSP& tracker) {
+    auto missing = [&](llvm::Error error) -> Diagnostic {
+      llvm::consumeError(tracker->remove());
+      return failure("JIT: " + error_text(std::move(error)));
+    };
     auto bind = jit_->lookup(name + "_bind");
-    if (!bind) return failure("JIT: " + error_text(bind.takeError()));
+    if (!bind) return missing(bind.takeError());
     auto run = jit_->lookup(name + "_run");
-    if (!run) return failure("JIT: " + error_text(run.takeError()));
-    return CompiledKernel{bind->toPtr<KernelBindFunction>(), run->toPtr<KernelRunFunction>(), width, 0, CacheHit::none};
+    if (!run) return missing(run.takeError());
+    const CompiledKernel functions{bind->toPtr<KernelBindFunction>(), run->toPtr<KernelRunFunction>(), width, 0,
+                                   CacheHit::none, nullptr};
+    return std::shared_ptr<const KernelCode>(std::make_shared<KernelCode>(name, tracker, functions, mutex_));
+  }
+
+  static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {
+    return {code->bind, code->run, code->width, milliseconds, cache, code};
+  }
+
+  // A new kernel: resident, and the most recently used.
+  CompiledKernel admit(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds,
+                       std::vector<std::shared_ptr<const KernelCode>>& evicted) {
+    std::erase_if(resident_, [](const auto& entry) { return entry.second.expired(); });
+    resident_[code->name] = code;
+    keep_recent(code, evicted);
+    return compiled(code, cache, milliseconds);
+  }
+
+  // Moves `code` to the front of the memory cache; what falls off its end
+  // goes to `evicted`.
+  void keep_recent(const std::shared_ptr<const KernelCode>& code,
+                   std::vector<std::shared_ptr<const KernelCode>>& evicted) {
+    std::erase(recent_, code);
+    recent_.insert(recent_.begin(), code);
+    while (recent_.size() > static_cast<std::size_t>(memory_cache_kernels)) {
+      evicted.push_back(std::move(recent_.back()));
+      recent_.pop_back();
+    }
   }
 
   void optimize_module(llvm::Module& module) {
@@ -321,18 +389,14 @@ class Jit {
     builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
   }
 
-  Result<CompiledKernel> remember(const std::string& name, CompiledKernel kernel) {
-    kernels_[name] = kernel;
-    return kernel;
-  }
-
   std::string startup_error_;
   std::unique_ptr<llvm::TargetMachine> target_machine_;
   std::unique_ptr<llvm::TargetMachine> fast_target_machine_;  // for huge kernels: see build_and_add
   std::unique_ptr<DiskObjectCache> object_cache_;
   std::unique_ptr<llvm::orc::LLJIT> jit_;
-  std::mutex mutex_;
-  std::map<std::string, CompiledKernel> kernels_;
+  std::recursive_mutex mutex_;  // recursive: a KernelCode may go while a compile holds it
+  std::map<std::string, std::weak_ptr<const KernelCode>> resident_;  // every kernel in the JIT, by name
+  std::vector<std::shared_ptr<const KernelCode>> recent_;            // the memory cache, most recent first
   int cold_compiles_ = 0;
 };
 
@@ -343,6 +407,8 @@ int host_vector_width() {
   if (host_has("avx2")) return 8;
   return 4;
 }
+
+long resident_kernel_count() { return resident_kernels.load(); }
 
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
   return Jit::instance().compile(ir, width, settings);

@@ -2,11 +2,14 @@
 // In memory, compiled kernels are kept by a hash of the optimized ShadeIR
 // (and width and CPU), so a second compile of the same graph is a lookup;
 // params are passed at call time, so changing one reuses the machine code.
+// Each kernel's code has an ORC ResourceTracker of its own and is removed
+// from the JIT once neither the cache nor any Kernel holds it.
 // On disk (a user cache folder), each kernel's object file is kept so that
 // a second run of the same graph skips compilation altogether.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -21,13 +24,27 @@ int host_vector_width();
 
 enum class CacheHit { none, memory, disk };
 
+// A kernel's machine code in the JIT (jit_compiler.cpp), released from
+// it when the last CompiledKernel holding it (the memory cache's or a
+// Kernel's) goes.
+struct KernelCode;
+
 struct CompiledKernel {
   KernelBindFunction bind = nullptr;
   KernelRunFunction run = nullptr;
   int width = 0;
   double compile_milliseconds = 0;
   CacheHit cache = CacheHit::none;
+  std::shared_ptr<const KernelCode> code;  // keeps bind and run callable
 };
+
+// The memory cache holds the kernels of this many programs, the most
+// recently used; older ones stay in the JIT only while a Kernel uses them,
+// so a long-running process (shadetree serve) does not grow without bound.
+inline constexpr int memory_cache_kernels = 64;
+
+// Kernels whose machine code is in the JIT now (cached or in use).
+long resident_kernel_count();
 
 struct JitSettings {
   bool disk_cache = true;

@@ -80,7 +80,11 @@ std::unique_ptr<BoundKernel> JitKernel::bind(const float* params, const UniformI
 Result<std::unique_ptr<Kernel>> make_jit_kernel(ShadeIR ir, int width, const JitSettings& settings) {
   Result<CompiledKernel> compiled = compile_kernel(ir, width, settings);
   if (!compiled) return compiled.error();
-  return std::unique_ptr<Kernel>(std::make_unique<JitKernel>(std::move(ir), *compiled));
+  return make_jit_kernel(std::move(ir), *compiled);
+}
+
+std::unique_ptr<Kernel> make_jit_kernel(ShadeIR ir, const CompiledKernel& compiled) {
+  return std::make_unique<JitKernel>(std::move(ir), compiled);
 }
 
 }  // namespace shadetree

@@ -1,11 +1,12 @@
 // The JIT emits vector code of the chosen width and caches kernels: a second
-// compile of the same graph is a lookup, params are bound at call time, and
-// compiled objects land in the disk cache.
+// compile of the same graph is a lookup, params are bound at call time,
+// compiled objects land in the disk cache, and the memory cache is bounded,
+// releasing kernels no one uses.
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include <filesystem>
+#include <sstream>
+#include <vector>
 
 #include "pipeline/compile_graph.h"
 #include "jit/jit_compiler.h"
@@ -139,6 +140,53 @@ TEST(JitCompiler, CompiledObjectsGoToTheDiskCache) {
   }
   EXPECT_EQ(objects, 1u) << names;
   std::filesystem::remove_all(folder);
+}
+
+// The graph's colour is the constant `red`: a new program for each value.
+Result<LoadedGraph> constant_graph(float red) {
+  return compile_graph_text(testing::graph_text(R"({"id": "c", "op": "color", "in": {"r": )" + std::to_string(red) + "}}",
+                                                R"("color": "c")"),
+                            "constant.json");
+}
+
+float red_of(const Kernel& kernel) {
+  std::unique_ptr<BoundKernel> bound = kernel.bind(nullptr, UniformInputs{});
+  float red[1], green[1], blue[1], alpha[1];
+  float* outputs[4] = {red, green, blue, alpha};
+  bound->run(SampleInputs{}, outputs, 1);  // a constant reads no planes
+  return red[0];
+}
+
+TEST(JitCompiler, TheMemoryCacheIsBoundedAndKernelsInUseOutliveIt) {
+  Result<LoadedGraph> held_graph = constant_graph(0.25f);
+  ASSERT_TRUE(held_graph.ok()) << held_graph.error().to_string();
+  Result<std::unique_ptr<Kernel>> held = make_jit_kernel(held_graph->ir, 4, memory_only());
+  ASSERT_TRUE(held.ok()) << held.error().to_string();
+  const long resident_before = resident_kernel_count();
+  for (int i = 1; i <= memory_cache_kernels + 10; ++i) {
+    Result<LoadedGraph> other = constant_graph(1.0f + static_cast<float>(i));
+    ASSERT_TRUE(other.ok());
+    ASSERT_TRUE(compile_kernel(other->ir, 4, memory_only()).ok());
+  }
+  EXPECT_LE(resident_kernel_count(), resident_before + memory_cache_kernels)
+      << "kernels beyond the cache, used by no Kernel, leave the JIT";
+  EXPECT_FLOAT_EQ(red_of(**held), 0.25f) << "a kernel in use keeps its code after leaving the cache";
+  Result<CompiledKernel> again = compile_kernel(held_graph->ir, 4, memory_only());
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again->cache, CacheHit::memory) << "and is found again while in use";
+  held->reset();
+  const long resident_with_again = resident_kernel_count();
+  *again = CompiledKernel{};
+  for (int i = 1; i <= memory_cache_kernels; ++i) {
+    Result<LoadedGraph> other = constant_graph(100.0f + static_cast<float>(i));
+    ASSERT_TRUE(other.ok());
+    ASSERT_TRUE(compile_kernel(other->ir, 4, memory_only()).ok());
+  }
+  EXPECT_LE(resident_kernel_count(), resident_with_again) << "the cache stays at its bound";
+  Result<CompiledKernel> recompiled = compile_kernel(held_graph->ir, 4, memory_only());
+  ASSERT_TRUE(recompiled.ok()) << "a released program compiles anew: " << recompiled.error().to_string();
+  EXPECT_EQ(recompiled->cache, CacheHit::none);
+  EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(held_graph->ir, *recompiled)), 0.25f);
 }
 
 }  // namespace
