@@ -55,7 +55,7 @@ using FrameRenderer = std::function<Result<Image>(float frame, std::string* summ
 // scene, else the preview sphere.
 Result<Scene> surface_scene(const Graph& graph, const RenderArguments& arguments) {
   std::vector<std::string> search_paths = arguments.search_paths;
-  Result<SceneDesc> desc = graph.render.scene ? Result<SceneDesc>(*graph.render.scene) : preview_scene("sphere");
+  Result<SceneDesc> desc = surface_scene_desc(graph);
   if (!arguments.object.empty()) {
     desc = preview_scene(arguments.object);
     // A mesh named on the command line is the user's own choice of file.

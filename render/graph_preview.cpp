@@ -18,6 +18,7 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
     view.frame = request.frame;
     TextureRenderOptions options;
     options.threads = request.threads;
+    options.cancel = request.cancel;
     return render_texture(kernel, loaded.params, view, options);
   }
   if (graph.kind == GraphKind::volume) {
@@ -28,10 +29,11 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
     VolumeView view{request.width, request.height, request.frame};
     VolumeRenderOptions options;
     options.threads = request.threads;
+    options.cancel = request.cancel;
     return render_volume(kernel, loaded.params, *scene, *graph.render.volume,
                          Camera(scene->desc().camera, request.width, request.height), view, options);
   }
-  Result<SceneDesc> desc = graph.render.scene ? Result<SceneDesc>(*graph.render.scene) : preview_scene("sphere");
+  Result<SceneDesc> desc = surface_scene_desc(graph);
   if (!desc) return desc.error();
   Result<Scene> scene = Scene::build(*desc, graph.file, {});
   if (!scene) return scene.error();
@@ -41,6 +43,7 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
   view.frame = request.frame;
   SurfaceRenderOptions options;
   options.threads = request.threads;
+  options.cancel = request.cancel;
   return render_surface(kernel, loaded.params, *scene, Camera(scene->desc().camera, request.width, request.height),
                         view, options);
 }

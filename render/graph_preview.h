@@ -4,6 +4,8 @@
 // the editor's previews, where every kind must render from one call.
 #pragma once
 
+#include <atomic>
+
 #include "graph/diagnostic.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
@@ -16,6 +18,7 @@ struct PreviewRequest {
   int height = 256;
   float frame = 0.0f;
   int threads = 0;  // 0: all cores
+  const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (render/image_tiles.h)
 };
 
 // RGB, or RGBA for a texture graph with an alpha output.

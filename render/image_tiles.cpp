@@ -9,8 +9,8 @@
 
 namespace shadetree {
 
-void for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
-                   const ProgressCallback& progress) {
+Status for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
+                     const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   const int tiles_x = (width + tile_size - 1) / tile_size;
   const int tiles_y = (height + tile_size - 1) / tile_size;
   const int tile_count = tiles_x * tiles_y;
@@ -20,6 +20,7 @@ void for_each_tile(int width, int height, int tile_size, int threads, const std:
     tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const tbb::blocked_range2d<int>& range) {
       for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty)
         for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
+          if (cancel && cancel->load(std::memory_order_relaxed)) return;
           const int x0 = tx * tile_size, y0 = ty * tile_size;
           const long items = render(Tile{x0, y0, std::min(tile_size, width - x0), std::min(tile_size, height - y0)});
           const long all_items = items_done += items;
@@ -28,6 +29,8 @@ void for_each_tile(int width, int height, int tile_size, int threads, const std:
         }
     });
   });
+  if (cancel && cancel->load()) return Diagnostic{ExitStatus::failure, {}, {}, {}, "render cancelled"};
+  return success();
 }
 
 }  // namespace shadetree

@@ -3,8 +3,10 @@
 // any thread count.
 #pragma once
 
+#include <atomic>
 #include <functional>
 
+#include "graph/diagnostic.h"
 #include "render/progress.h"
 
 namespace shadetree {
@@ -17,8 +19,11 @@ struct Tile {
 // render(tile) for every tile of `tile_size` pixels square of a `width` x
 // `height` image, on `threads` threads (0: all cores); render returns the
 // work the tile held (rays, samples), which progress, if set, is told of
-// after each tile with the tiles done.
-void for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
-                   const ProgressCallback& progress);
+// after each tile with the tiles done. Once `cancel` (if set) is true,
+// tiles not yet started are skipped and the loop fails with "render
+// cancelled": how the editor's server drops a preview a newer one has
+// superseded.
+Status for_each_tile(int width, int height, int tile_size, int threads, const std::function<long(const Tile&)>& render,
+                     const ProgressCallback& progress, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace shadetree

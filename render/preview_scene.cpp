@@ -66,4 +66,9 @@ Result<SceneDesc> preview_scene(const std::string& object) {
   return scene;
 }
 
+Result<SceneDesc> surface_scene_desc(const Graph& graph) {
+  if (graph.render.scene) return *graph.render.scene;
+  return preview_scene("sphere");
+}
+
 }  // namespace shadetree

@@ -205,7 +205,10 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
       }
     return static_cast<long>(w) * h * samples_per_pixel;
   };
-  for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
+  if (Status done = for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress,
+                                  options.cancel);
+      !done)
+    return done.error();
   if (stats) {
     stats->visibility_seconds = seconds(visibility_ns);
     stats->shading_seconds = seconds(shading_ns);

@@ -6,6 +6,7 @@
 // background); then the driver lights what the graph returned.
 #pragma once
 
+#include <atomic>
 #include <vector>
 
 #include "ir/kernel.h"
@@ -27,6 +28,7 @@ struct SurfaceRenderOptions {
   int threads = 0;  // 0: all cores
   bool shadows = true;  // and the scene's "shadows"
   ProgressCallback progress;  // may be empty
+  const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
 
 // Where the time went, summed over threads (seconds of one core).

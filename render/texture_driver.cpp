@@ -104,7 +104,10 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
     }
     return static_cast<long>(count);
   };
-  for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress);
+  if (Status done = for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress,
+                                  options.cancel);
+      !done)
+    return done.error();
   return image;
 }
 

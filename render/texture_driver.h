@@ -2,6 +2,7 @@
 // parallel over tiles, through the Kernel interface.
 #pragma once
 
+#include <atomic>
 #include <vector>
 
 #include "graph/diagnostic.h"
@@ -45,6 +46,7 @@ TextureSample texture_sample_at_point(const TextureView& view, const float P[3])
 struct TextureRenderOptions {
   int threads = 0;  // 0: all cores
   ProgressCallback progress;  // may be empty
+  const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
 
 // A texture graph's "color" and optional "alpha" (nodes/output_contract.h).

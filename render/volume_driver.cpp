@@ -507,7 +507,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   std::atomic<long long> tile_ns{0}, kernel_ns{0};
   std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, kernel_calls{0}, lane_slots{0};
 
-  for_each_tile(
+  Status done = for_each_tile(
       view.width, view.height, tile_size, options.threads,
       [&](const Tile& tile) -> long {
         StageClock clock(tile_ns);
@@ -529,7 +529,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         lane_slots += counts.lane_slots;
         return counts.rays;
       },
-      options.progress);
+      options.progress, options.cancel);
+  if (!done) return done.error();
 
   if (stats) {
     stats->kernel_seconds = seconds(kernel_ns);

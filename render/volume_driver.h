@@ -12,6 +12,7 @@
 // so the image is the same for any packet size and thread count.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -43,6 +44,7 @@ struct VolumeRenderOptions {
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
   ProgressCallback progress;  // may be empty
+  const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
 
 // Where the time went (seconds of one core, summed over threads) and how
