@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -16,8 +17,10 @@
 #include "pipeline/compile_graph.h"
 #include "render/graph_files.h"
 #include "render/graph_preview.h"
+#include "render/image_output.h"
 #include "render/output_file.h"
 #include "server/node_library.h"
+#include "server/node_probe.h"
 
 namespace shadetree {
 namespace {
@@ -222,7 +225,10 @@ void EditorServer::add_routes() {
     send_json(response, {{"graphs", graphs_.graph_files()}});
   });
   http.Get("/api/stats", [this](const httplib::Request&, httplib::Response& response) {
-    send_json(response, {{"compiles", compiles_.load()}, {"previews", previews_.load()}});
+    send_json(response, {{"compiles", compiles_.load()},
+                         {"previews", previews_.load()},
+                         {"rendering", rendering_.load()},
+                         {"kernels", resident_kernel_count()}});
   });
 
   // The graph file a request names, or the served folder's untitled.json.
@@ -248,6 +254,8 @@ void EditorServer::add_routes() {
   http.Put("/api/graph", [graph_path](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, true);
     if (!path) return send_error(response, 400, path.error().message);
+    if (request.get_param_value("new") == "1" && std::filesystem::exists(*path))
+      return send_error(response, 409, request.get_param_value("path") + " exists already");
     if (!nlohmann::json::accept(request.body)) return send_error(response, 400, "the body is not JSON");
     Status written = write_then_rename(path->string(), [&](const std::string& temporary) -> std::string {
       std::ofstream file(temporary, std::ios::binary);
@@ -267,44 +275,110 @@ void EditorServer::add_routes() {
     send_json(response, {{"ok", true}});
   });
 
-  http.Post("/api/preview", [this, graph_path](const httplib::Request& request, httplib::Response& response) {
-    const auto start = std::chrono::steady_clock::now();
+  // Renders the request's body (a graph, or a node of it with node=) at
+  // width x height up to `max_side`, or sends the error and returns nothing.
+  struct Rendered {
+    Image image;
+    CacheHit kernel;
+  };
+  auto render_body = [this, graph_path](const httplib::Request& request, httplib::Response& response,
+                                        int max_side) -> std::optional<Rendered> {
     Result<std::filesystem::path> path = graph_path(request, false);
-    if (!path) return send_error(response, 400, path.error().message);
+    if (!path) return send_error(response, 400, path.error().message), std::nullopt;
     PreviewRequest preview;
     for (auto [name, target] : {std::pair{"width", &preview.width}, std::pair{"height", &preview.height}}) {
-      Result<int> side = integer_parameter(request, name, 256, 1, options_.max_preview_side);
-      if (!side) return send_error(response, 400, side.error().message);
+      Result<int> side = integer_parameter(request, name, 256, 1, max_side);
+      if (!side) return send_error(response, 400, side.error().message), std::nullopt;
       *target = *side;
     }
     Result<int> frame = integer_parameter(request, "frame", 0, 0, 1000000);
-    if (!frame) return send_error(response, 400, frame.error().message);
+    if (!frame) return send_error(response, 400, frame.error().message), std::nullopt;
     preview.frame = static_cast<float>(*frame);
-    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, graph_files());
-    if (!loaded) {
+    const std::string slot = request.get_param_value("slot");
+    if (slot.size() > 100) return send_error(response, 400, "slot names are at most 100 characters"), std::nullopt;
+    auto unprocessable = [&](const Diagnostic& diagnostic) {
       response.status = 422;
-      return send_json(response, {{"error", loaded.error().to_string()}, {"diagnostic", diagnostic_json(loaded.error())}});
+      send_json(response, {{"error", diagnostic.to_string()}, {"diagnostic", diagnostic_json(diagnostic)}});
+      return std::nullopt;
+    };
+    std::string body = request.body;
+    if (request.has_param("node")) {
+      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), graph_files());
+      if (!probe) return unprocessable(probe.error());
+      body = std::move(*probe);
     }
+    Result<LoadedGraph> loaded = compile_graph_text(body, path->string(), {}, {}, graph_files());
+    if (!loaded) return unprocessable(loaded.error());
     // The kernel: found in the caches unless the program changed.
-    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 0);
-    if (!compiled) return send_error(response, 500, compiled.error().to_string());
-    if (compiled->cache == CacheHit::none) ++compiles_;
-    Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(loaded->ir);
-    if (!kernel) return send_error(response, 500, kernel.error().to_string());
-    Result<Image> image = render_preview(*loaded, **kernel, preview);
-    if (!image) return send_error(response, http_status(image.error()), image.error().to_string());
+    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 0, options_.jit);
+    if (!compiled) return send_error(response, 500, compiled.error().to_string()), std::nullopt;
+    const CacheHit cache = compiled->cache;
+    if (cache == CacheHit::none) ++compiles_;
+    const std::unique_ptr<Kernel> kernel = make_jit_kernel(loaded->ir, *compiled);
+    const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
+    preview.cancel = cancel.get();
+    ++rendering_;
+    Result<Image> image = render_preview(*loaded, *kernel, preview);
+    --rendering_;
+    if (cancel) release_slot(slot, cancel);
+    if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
+    if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
+    return Rendered{std::move(*image), cache};
+  };
+
+  http.Post("/api/preview", [this, render_body](const httplib::Request& request, httplib::Response& response) {
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<Rendered> rendered = render_body(request, response, options_.max_preview_side);
+    if (!rendered) return;
     ++previews_;
-    response.set_content(rgba_bytes(*image), "application/octet-stream");
-    response.set_header("X-Width", std::to_string(image->width));
-    response.set_header("X-Height", std::to_string(image->height));
-    const char* kernel_source = compiled->cache == CacheHit::none     ? "compiled"
-                                : compiled->cache == CacheHit::memory ? "memory"
-                                                                      : "disk";
+    response.set_content(rgba_bytes(rendered->image), "application/octet-stream");
+    response.set_header("X-Width", std::to_string(rendered->image.width));
+    response.set_header("X-Height", std::to_string(rendered->image.height));
+    const char* kernel_source = rendered->kernel == CacheHit::none     ? "compiled"
+                                : rendered->kernel == CacheHit::memory ? "memory"
+                                                                       : "disk";
     response.set_header("X-Kernel", kernel_source);
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     response.set_header("X-Milliseconds", std::to_string(milliseconds));
   });
+
+  http.Post("/api/export", [this, render_body, graph_path](const httplib::Request& request,
+                                                           httplib::Response& response) {
+    const std::string format = request.has_param("format") ? request.get_param_value("format") : "png";
+    if (format != "png" && format != "exr") return send_error(response, 400, "format must be png or exr");
+    std::optional<Rendered> rendered = render_body(request, response, options_.max_export_side);
+    if (!rendered) return;
+    // OpenImageIO writes files: write one in the system's temporary folder,
+    // send it, and remove it.
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("shadetree-export-" + random_token() + "." + format);
+    Status written = write_image(rendered->image, file.string());
+    bool ok = false;
+    const std::string bytes = written ? read_file(file, &ok) : std::string();
+    std::error_code ignored;
+    std::filesystem::remove(file, ignored);
+    if (!written) return send_error(response, 500, written.error().message);
+    if (!ok) return send_error(response, 500, "cannot read back the exported image");
+    const Result<std::filesystem::path> path = graph_path(request, false);
+    const std::string stem = path ? path->stem().string() : "untitled";
+    response.set_content(bytes, format == "png" ? "image/png" : "image/x-exr");
+    response.set_header("Content-Disposition", "attachment; filename=\"" + stem + "." + format + "\"");
+  });
+}
+
+std::shared_ptr<std::atomic<bool>> EditorServer::claim_slot(const std::string& slot) {
+  auto flag = std::make_shared<std::atomic<bool>>(false);
+  std::lock_guard lock(slots_mutex_);
+  std::shared_ptr<std::atomic<bool>>& current = slots_[slot];
+  if (current) current->store(true);
+  current = flag;
+  return flag;
+}
+
+void EditorServer::release_slot(const std::string& slot, const std::shared_ptr<std::atomic<bool>>& flag) {
+  std::lock_guard lock(slots_mutex_);
+  if (auto found = slots_.find(slot); found != slots_.end() && found->second == flag) slots_.erase(found);
 }
 
 }  // namespace shadetree

@@ -18,21 +18,32 @@
 //   GET  /api/nodes             the node library (server/node_library.h)
 //   GET  /api/graphs            {"graphs": [relative paths of the .json files]}
 //   GET  /api/graph?path=P      the file's text
-//   PUT  /api/graph?path=P      saves the body (JSON text) to P, through a temporary file
+//   PUT  /api/graph?path=P[&new=1]
+//                               saves the body (JSON text) to P, through a temporary file;
+//                               with new=1 (save as), 409 if P exists
 //   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "error": {...}}
-//   POST /api/preview?path=P&width=W&height=H&frame=F
+//   POST /api/preview?path=P&width=W&height=H&frame=F[&node=ID][&slot=S]
 //                               renders the body as graph P: W x H RGBA bytes, rows from the top;
 //                               headers X-Width, X-Height, X-Kernel (compiled | memory | disk),
-//                               X-Milliseconds
-//   GET  /api/stats             {"compiles": kernels compiled since start, "previews": N}
+//                               X-Milliseconds. node=ID (or ID.output): that node's value
+//                               instead of the outputs (server/node_probe.h), for thumbnails.
+//                               slot=S: a newer request of the same slot cancels this one,
+//                               which then answers 409 {"error": "superseded"}
+//   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr
+//                               the body rendered as an image file (up to max_export_side)
+//   GET  /api/stats             {"compiles": kernels compiled since start, "previews": N,
+//                                "rendering": previews in progress, "kernels": JIT kernels resident}
 #pragma once
 
 #include <atomic>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 
 #include "graph/diagnostic.h"
+#include "jit/jit_compiler.h"
 #include "server/served_folder.h"
 
 namespace httplib {
@@ -49,6 +60,8 @@ struct ServeOptions {
   std::string token;             // empty: a random one
   std::size_t max_body = std::size_t{4} << 20;
   int max_preview_side = 2048;
+  int max_export_side = 4096;
+  JitSettings jit;
 };
 
 class EditorServer {
@@ -67,13 +80,18 @@ class EditorServer {
  private:
   EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor);
   void add_routes();
+  // The slot's flag, raised to cancel the render of its previous request.
+  std::shared_ptr<std::atomic<bool>> claim_slot(const std::string& slot);
+  void release_slot(const std::string& slot, const std::shared_ptr<std::atomic<bool>>& flag);
 
   ServeOptions options_;
   ServedFolder graphs_, editor_;
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   int port_ = 0;
-  std::atomic<long> compiles_{0}, previews_{0};
+  std::atomic<long> compiles_{0}, previews_{0}, rendering_{0};
+  std::mutex slots_mutex_;
+  std::map<std::string, std::shared_ptr<std::atomic<bool>>> slots_;  // slot -> its render in progress
 };
 
 }  // namespace shadetree

@@ -1,0 +1,21 @@
+// A picture of one node, for the editor's node thumbnails: the graph with
+// its outputs replaced by that node's value. Texture and surface graphs
+// show the value as their colour (a float as grey, a vec2 as red and
+// green, a vec3 as its three components, a bool as white where true);
+// a volume graph shows it as a texture over the slice through the middle
+// of its bounds, so a thumbnail needs no ray march.
+#pragma once
+
+#include <string>
+
+#include "graph/check.h"
+#include "graph/diagnostic.h"
+
+namespace shadetree {
+
+// The probe graph's JSON text, for graph text `json` (named `file` in
+// messages) and `node`, a node id of the main graph or "id.output".
+Result<std::string> node_probe_graph(const std::string& json, const std::string& file, const std::string& node,
+                                     const GraphFiles& files);
+
+}  // namespace shadetree
