@@ -527,6 +527,11 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
     function.removeFnAttr(llvm::Attribute::OptimizeNone);
     function.addFnAttr(llvm::Attribute::AlwaysInline);
   }
+  // Its constant tables too (C++ inline variables, linkonce_odr): a weak
+  // definition shared by name would tie this kernel to the copy of the
+  // first kernel that defined it, which may be released before this one.
+  for (llvm::GlobalVariable& global : module->globals())
+    if (!global.isDeclaration()) global.setLinkage(llvm::GlobalValue::InternalLinkage);
   KernelEmitter emitter(ir, width, *module);
   Result<llvm::Function*> bind = emitter.emit_bind(function_name + "_bind");
   if (!bind) return bind.error();

@@ -74,6 +74,30 @@ TEST(JitCompiler, KernelsHoldOnlyTheirTwoFunctions) {
   EXPECT_EQ(ir->find("global_ctors"), std::string::npos);
 }
 
+// Every table a kernel reads is its own: a weak (linkonce_odr) table from
+// the op library, shared by name, bound later kernels to the first
+// kernel's copy, and releasing that kernel crashed them (found by the
+// random differential test once the memory cache was bounded).
+TEST(JitCompiler, KernelsShareNoDataByName) {
+  Result<LoadedGraph> loaded = compile_graph_text(
+      testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "n", "op": "noise_improved", "in": {"p": "p"}},
+         {"id": "c", "op": "color", "in": {"r": "n"}})",
+                          R"("color": "c")"),
+      "improved.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+  int globals = 0;
+  std::istringstream lines(*ir);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] != '@') continue;
+    ++globals;
+    EXPECT_TRUE(line.find(" internal ") != std::string::npos || line.find(" private ") != std::string::npos)
+        << line.substr(0, 120);
+  }
+  EXPECT_GT(globals, 0) << "the permutation table is in the kernel";
+}
+
 // Past the inlining budget, an op used by many nodes is compiled once and
 // called: a chain of 200 exps compiles to three functions, not one huge one.
 TEST(JitCompiler, LargeGraphsCallTheirLargestOpsInsteadOfInliningThem) {
