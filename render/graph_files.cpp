@@ -1,9 +1,10 @@
 #include "render/graph_files.h"
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <tuple>
+#include <utility>
 
 #include "nodes/limits.h"
 #include "render/image_output.h"
@@ -15,12 +16,33 @@ namespace shadetree {
 namespace {
 
 // What the readers of one GraphFiles have read, by resolved path (and grid
-// resolution): a graph that names a file in several nodes (a mesh's
-// distance and closest point, say) reads and converts it once.
+// resolution), with the file's modification time: a graph that names a
+// file in several nodes (a mesh's distance and closest point, say) reads
+// and converts it once, and a file changed on disk is read again. Only
+// what was read without error is kept.
+template <class Key, class Value>
+class ReadCache {
+ public:
+  template <class Read>
+  Result<Value> get(const Key& key, const std::string& path, Read read) {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(path, error);
+    std::lock_guard lock(mutex_);
+    auto found = entries_.find(key);
+    if (found != entries_.end() && !error && found->second.first == time) return found->second.second;
+    Result<Value> value = read();
+    if (value && !error) entries_.insert_or_assign(key, std::pair{time, *value});
+    return value;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<Key, std::pair<std::filesystem::file_time_type, Value>> entries_;
+};
+
 struct ReadFiles {
-  std::mutex mutex;
-  std::map<std::string, Result<Image>> images;
-  std::map<std::pair<std::string, int>, Result<DistanceGrid>> grids;
+  ReadCache<std::string, Image> images;
+  ReadCache<std::pair<std::string, int>, DistanceGrid> grids;
 };
 
 }  // namespace
@@ -31,28 +53,21 @@ GraphFiles graph_files(std::vector<std::string> search_paths) {
   files.image = [search_paths, read](const std::string& graph_file, const std::string& path) -> Result<Image> {
     Result<std::string> resolved = resolve_graph_resource(graph_file, path, search_paths, "image");
     if (!resolved) return resolved.error();
-    std::lock_guard lock(read->mutex);
-    auto found = read->images.find(*resolved);
-    if (found == read->images.end()) {
+    return read->images.get(*resolved, *resolved, [&]() -> Result<Image> {
       Result<Image> image = read_image(*resolved, max_image_pixels);
-      if (!image) image = invalid_input(image.error().message);
-      found = read->images.emplace(*resolved, std::move(image)).first;
-    }
-    return found->second;
+      if (!image) return invalid_input(image.error().message);
+      return image;
+    });
   };
   files.distance_grid = [search_paths, read](const std::string& graph_file, const std::string& path,
                                              int resolution) -> Result<DistanceGrid> {
     Result<std::string> resolved = resolve_graph_resource(graph_file, path, search_paths, "mesh");
     if (!resolved) return resolved.error();
-    std::lock_guard lock(read->mutex);
-    const auto key = std::pair{*resolved, resolution};
-    auto found = read->grids.find(key);
-    if (found == read->grids.end()) {
+    return read->grids.get(std::pair{*resolved, resolution}, *resolved, [&]() -> Result<DistanceGrid> {
       Result<TriangleMesh> mesh = load_mesh(*resolved);
-      found = read->grids.emplace(key, mesh ? mesh_distance_grid(*mesh, resolution) : Result<DistanceGrid>(mesh.error()))
-                  .first;
-    }
-    return found->second;
+      if (!mesh) return mesh.error();
+      return mesh_distance_grid(*mesh, resolution);
+    });
   };
   return files;
 }

@@ -11,6 +11,8 @@
 
 namespace shadetree {
 
+// The readers keep what they have read, until the file changes on disk:
+// one GraphFiles may serve many checks (shadetree serve keeps one).
 GraphFiles graph_files(std::vector<std::string> search_paths = {});
 
 }  // namespace shadetree

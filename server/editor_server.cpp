@@ -125,7 +125,11 @@ std::string rgba_bytes(const Image& image) {
 }  // namespace
 
 EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor)
-    : options_(options), graphs_(std::move(graphs)), editor_(std::move(editor)), server_(new httplib::Server) {}
+    : options_(options),
+      graphs_(std::move(graphs)),
+      editor_(std::move(editor)),
+      files_(graph_files()),
+      server_(new httplib::Server) {}
 
 EditorServer::~EditorServer() { stop(); }
 
@@ -267,10 +271,10 @@ void EditorServer::add_routes() {
     send_json(response, {{"saved", request.get_param_value("path")}});
   });
 
-  http.Post("/api/check", [graph_path](const httplib::Request& request, httplib::Response& response) {
+  http.Post("/api/check", [this, graph_path](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, false);
     if (!path) return send_error(response, 400, path.error().message);
-    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, graph_files());
+    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, files_);
     if (!loaded) return send_json(response, {{"ok", false}, {"error", diagnostic_json(loaded.error())}});
     send_json(response, {{"ok", true}});
   });
@@ -280,6 +284,7 @@ void EditorServer::add_routes() {
   struct Rendered {
     Image image;
     CacheHit kernel;
+    double compile_milliseconds;  // graph text to machine code
   };
   auto render_body = [this, graph_path](const httplib::Request& request, httplib::Response& response,
                                         int max_side) -> std::optional<Rendered> {
@@ -301,13 +306,14 @@ void EditorServer::add_routes() {
       send_json(response, {{"error", diagnostic.to_string()}, {"diagnostic", diagnostic_json(diagnostic)}});
       return std::nullopt;
     };
+    const auto start = std::chrono::steady_clock::now();
     std::string body = request.body;
     if (request.has_param("node")) {
-      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), graph_files());
+      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), files_);
       if (!probe) return unprocessable(probe.error());
       body = std::move(*probe);
     }
-    Result<LoadedGraph> loaded = compile_graph_text(body, path->string(), {}, {}, graph_files());
+    Result<LoadedGraph> loaded = compile_graph_text(body, path->string(), {}, {}, files_);
     if (!loaded) return unprocessable(loaded.error());
     // The kernel: found in the caches unless the program changed.
     Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 0, options_.jit);
@@ -315,6 +321,8 @@ void EditorServer::add_routes() {
     const CacheHit cache = compiled->cache;
     if (cache == CacheHit::none) ++compiles_;
     const std::unique_ptr<Kernel> kernel = make_jit_kernel(loaded->ir, *compiled);
+    const double compile_milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
     preview.cancel = cancel.get();
     ++rendering_;
@@ -323,7 +331,7 @@ void EditorServer::add_routes() {
     if (cancel) release_slot(slot, cancel);
     if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
     if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
-    return Rendered{std::move(*image), cache};
+    return Rendered{std::move(*image), cache, compile_milliseconds};
   };
 
   http.Post("/api/preview", [this, render_body](const httplib::Request& request, httplib::Response& response) {
@@ -341,6 +349,7 @@ void EditorServer::add_routes() {
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     response.set_header("X-Milliseconds", std::to_string(milliseconds));
+    response.set_header("X-Compile-Milliseconds", std::to_string(rendered->compile_milliseconds));
   });
 
   http.Post("/api/export", [this, render_body, graph_path](const httplib::Request& request,

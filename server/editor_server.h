@@ -25,7 +25,8 @@
 //   POST /api/preview?path=P&width=W&height=H&frame=F[&node=ID][&slot=S]
 //                               renders the body as graph P: W x H RGBA bytes, rows from the top;
 //                               headers X-Width, X-Height, X-Kernel (compiled | memory | disk),
-//                               X-Milliseconds. node=ID (or ID.output): that node's value
+//                               X-Milliseconds (X-Compile-Milliseconds of them from the
+//                               graph's text to its machine code). node=ID (or ID.output): that node's value
 //                               instead of the outputs (server/node_probe.h), for thumbnails.
 //                               slot=S: a newer request of the same slot cancels this one,
 //                               which then answers 409 {"error": "superseded"}
@@ -42,6 +43,7 @@
 #include <string>
 #include <thread>
 
+#include "graph/check.h"
 #include "graph/diagnostic.h"
 #include "jit/jit_compiler.h"
 #include "server/served_folder.h"
@@ -86,6 +88,7 @@ class EditorServer {
 
   ServeOptions options_;
   ServedFolder graphs_, editor_;
+  GraphFiles files_;  // images and meshes the graphs name, kept while unchanged on disk
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   int port_ = 0;
