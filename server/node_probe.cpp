@@ -1,6 +1,9 @@
 #include "server/node_probe.h"
 
+#include <algorithm>
 #include <memory>
+#include <set>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -59,7 +62,22 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
   const Type type = probed->output_types[index];
   const std::string source = output.empty() ? id : id + "." + output;
 
+  // Only the node and what it reads: a volume's other nodes may read
+  // globals a texture has not (step_size, density).
+  std::set<std::string> upstream;
+  std::vector<const CheckedNode*> pending = {probed};
+  while (!pending.empty()) {
+    const CheckedNode* next = pending.back();
+    pending.pop_back();
+    if (!upstream.insert(next->node->id).second) continue;
+    for (const CheckedSource& source : next->inputs)
+      if (source.kind == CheckedSource::Kind::node) pending.push_back(&checked->main.nodes[source.index]);
+  }
   json document = json::parse(text);
+  json& nodes = document["nodes"];
+  nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
+                             [&](const json& node) { return !upstream.contains(node.value("id", std::string())); }),
+              nodes.end());
   const std::string probe = fresh_id(*graph, "probe_output");
   json colour = source;
   switch (type) {

@@ -38,7 +38,10 @@ const char* const sines_graph = R"({"format": "shadetree-graph", "version": 1, "
 class EditorServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / "shadetree-editor-server-test";
+    // One folder per test and process: ctest runs tests side by side.
+    root_ = fs::temp_directory_path() /
+            ("shadetree-editor-server-test-" + std::to_string(::getpid()) + "-" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
     fs::create_directories(root_ / "graphs" / "more");
     fs::create_directories(root_ / "editor");
@@ -265,11 +268,13 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
   EXPECT_NE(error_of(no_output).find("no output \"w\""), std::string::npos);
 
   // A volume graph's node, on the slice through the middle of its bounds:
-  // P.x runs over the bounds' x.
+  // P.x runs over the bounds' x. The nodes it does not read may use what
+  // only volumes have (step_size).
   const std::string volume_graph = R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
     "nodes": [{"id": "p", "op": "P"}, {"id": "parts", "op": "split", "in": {"v": "p"}},
-              {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 1}}],
-    "outputs": {"density": "d"},
+              {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 1}}, {"id": "step", "op": "step_size"},
+              {"id": "per_step", "op": "mul", "in": {"a": "d", "b": "step"}}],
+    "outputs": {"density": "per_step"},
     "render": {"volume": {"bounds": {"min": [0, 0, -1], "max": [1, 1, 1]}}}})";
   auto slice = client_->Post("/api/preview?path=waves.json&width=2&height=1&node=parts.x", headers_, volume_graph,
                              "application/json");
