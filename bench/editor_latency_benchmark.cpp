@@ -1,0 +1,138 @@
+// The editor's latency end to end: a real `shadetree serve` (in this
+// process, on a free port of 127.0.0.1) driven over HTTP, as the editor
+// page drives it. Three figures, each the time from sending a preview
+// request to having its pixels:
+//   editor_param_change/marble     a param changed on marble, 256x256:
+//                                  params are bound at call time, so no compile
+//   editor_volume_drag/fireball    the same on fireball at 128x128: frames per
+//                                  second while a slider is dragged
+//   editor_graph_edit_cold/G       graph G edited and recompiled cold (the
+//                                  JIT's caches bypassed), at the editor's
+//                                  preview size: 256x256, volumes 128x128
+//                                  while edited (the page refines when the
+//                                  user pauses); compile_ms is the part spent
+//                                  from the graph's text to machine code
+// Run
+//   build/shadetree_bench --benchmark_filter=editor_ --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <httplib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "server/editor_server.h"
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path gallery = fs::path(SHADETREE_SOURCE_DIR) / "graphs";
+
+struct Served {
+  std::unique_ptr<EditorServer> server;
+  std::unique_ptr<httplib::Client> client;
+  httplib::Headers headers;
+};
+
+// cold: every request compiles its kernel anew.
+Served& served(bool cold) {
+  static Served warm_server, cold_server;
+  Served& served = cold ? cold_server : warm_server;
+  if (served.server) return served;
+  ServeOptions options;
+  options.folder = gallery.string();
+  options.editor_folder = (fs::path(SHADETREE_SOURCE_DIR) / "editor").string();
+  options.jit.cold = cold;
+  Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+  if (!started) {
+    std::fprintf(stderr, "%s\n", started.error().to_string().c_str());
+    std::exit(1);
+  }
+  served.server = std::move(*started);
+  served.client = std::make_unique<httplib::Client>("127.0.0.1", served.server->port());
+  served.headers = {{"X-Shadetree-Token", served.server->token()}};
+  return served;
+}
+
+nlohmann::json gallery_graph(const std::string& name) {
+  std::ifstream file(gallery / (name + ".json"));
+  return nlohmann::json::parse(file);
+}
+
+// Posts `body` as a preview of `name`; false (and the benchmark skipped
+// with the server's error) unless it rendered from `expected_kernel`, if
+// set. Adds the server's compile time to *compile_milliseconds.
+bool preview(benchmark::State& state, Served& served, const std::string& name, const std::string& body, int side,
+             const char* expected_kernel, double* compile_milliseconds = nullptr) {
+  const std::string url = "/api/preview?path=" + name + ".json&width=" + std::to_string(side) +
+                          "&height=" + std::to_string(side) + "&slot=main";
+  httplib::Result result = served.client->Post(url, served.headers, body, "application/json");
+  if (!result || result->status != 200) {
+    state.SkipWithError(result ? result->body.c_str() : "no response");
+    return false;
+  }
+  if (expected_kernel && result->get_header_value("X-Kernel") != expected_kernel) {
+    state.SkipWithError(("the kernel came from " + result->get_header_value("X-Kernel")).c_str());
+    return false;
+  }
+  if (compile_milliseconds) *compile_milliseconds += std::stod(result->get_header_value("X-Compile-Milliseconds"));
+  return true;
+}
+
+// A slider dragged: param `param` alternates between its default and a
+// quarter more, which binds the cached kernel anew each time.
+void drag_param(benchmark::State& state, const std::string& name, const std::string& param, int side) {
+  Served& server = served(false);
+  nlohmann::json graph = gallery_graph(name);
+  std::string bodies[2];
+  for (int b = 0; b < 2; ++b) {
+    nlohmann::json& declared = graph["params"][param];
+    if (b == 1) declared["default"] = 1.25 * declared["default"].get<double>();
+    bodies[b] = graph.dump();
+  }
+  if (!preview(state, server, name, bodies[0], side, nullptr)) return;  // compiled (or found) once
+  int turn = 0;
+  for (auto _ : state)
+    if (!preview(state, server, name, bodies[++turn % 2], side, "memory")) return;
+}
+
+void editor_param_change(benchmark::State& state) { drag_param(state, "marble", "scale", 256); }
+void editor_volume_drag(benchmark::State& state) { drag_param(state, "fireball", "scale", 128); }
+
+void editor_graph_edit_cold(benchmark::State& state, const std::string& name) {
+  const nlohmann::json graph = gallery_graph(name);
+  const int side = graph.value("kind", "texture") == "volume" ? 128 : 256;
+  const std::string body = graph.dump();
+  // Opening the graph read its images and meshes; an edit finds them read.
+  if (!preview(state, served(true), name, body, side, "compiled")) return;
+  double compile_milliseconds = 0;
+  for (auto _ : state)
+    if (!preview(state, served(true), name, body, side, "compiled", &compile_milliseconds)) return;
+  state.counters["compile_ms"] = benchmark::Counter(compile_milliseconds, benchmark::Counter::kAvgIterations);
+}
+
+BENCHMARK(editor_param_change)->Name("editor_param_change/marble")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(editor_volume_drag)->Name("editor_volume_drag/fireball")->Unit(benchmark::kMillisecond)->UseRealTime();
+
+const bool graph_edits_registered = [] {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(gallery))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names)
+    benchmark::RegisterBenchmark(("editor_graph_edit_cold/" + name).c_str(),
+                                 [name](benchmark::State& state) { editor_graph_edit_cold(state, name); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  return true;
+}();
+
+}  // namespace
+}  // namespace shadetree
