@@ -1,147 +1,110 @@
 // The shadetree graph editor: the graph file (JSON) is the document; the
-// node canvas (@comfyorg/litegraph) is a view of its nodes and wires, and
-// every edit writes back into the document, which the server checks and
-// renders (server/editor_server.h). Params are sliders that change only
-// the document's param values, so a drag re-renders without recompiling.
-import { LGraph, LGraphCanvas, LGraphNode, LiteGraph } from "/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js";
+// node canvas (@comfyorg/litegraph) is a view of the nodes and wires of
+// one scope of it, the main graph or one function, and every edit writes
+// back into the document, which the server checks and renders
+// (server/editor_server.h). Params are sliders that change only the
+// document's param values, so a drag re-renders without recompiling.
+import { api, errorOf, imageOf } from "./api.js";
+import { attributeEditor } from "./curve_editor.js";
+import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
+import { History } from "./history.js";
+import { PreviewView } from "./preview_view.js";
+import { Thumbnails, thumbnailSide } from "./thumbnails.js";
 
-const token = new URLSearchParams(location.search).get("token") || "";
 const previewSize = 256;
-
-// Requests carry the session token (the cookie would do too, but not for
-// a page opened from a file:// URL in tests).
-async function api(method, url, body) {
-  const response = await fetch(url, { method, body, headers: { "X-Shadetree-Token": token } });
-  return response;
-}
+// How long after the last interactive edit a volume preview is refined to
+// full size; until then it renders at a fraction of it.
+const refineDelayMs = 250;
+const framesPerSecond = 24;  // nodes/globals.h: time = frame / 24
 
 const state = {
   library: new Map(),   // op name -> its entry of /api/nodes
   path: null,           // the graph file open, relative to the served folder
   doc: null,            // the graph file's JSON
+  scope: null,          // the function shown on the canvas, or null: the main graph
   previews: 0,          // previews drawn
   lastError: null,      // the checker's diagnostic of the current document, or null
-  sequence: 0,          // of the latest edit; older previews are dropped
+  sequence: 0,          // of the latest update; older previews are dropped
+  frame: 0,             // sent with previews of graphs that use frame or time
+  playing: false,
+  lastInteraction: -Infinity,
+  fullPreviewMs: 0,     // how long the last full-size preview took
+  drawnKey: null,       // what the preview shows: size, frame and the document sent
+  savedText: null,      // the document as last opened or saved
+  lastExport: null,     // {url, name, type, size} of the last exported image
 };
 
-const graph = new LGraph();
-const canvas = new LGraphCanvas(document.getElementById("graph-canvas"), graph);
+const byId = (id) => document.getElementById(id);
+const pathQuery = () => (state.path ? `path=${encodeURIComponent(state.path)}&` : "");
+
+const graphView = new GraphView(byId("graph-canvas"), {
+  state,
+  onEdit: () => edited(),
+  thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
+});
+const { graph, canvas } = graphView;
 const status = document.getElementById("status");
+const previewCanvas = document.getElementById("preview");
+const view = new PreviewView(previewCanvas, { documentOf: () => state.doc, onChange: (interactive) => scheduleUpdate({ interactive }) });
+const history = new History({ onChange: showHistoryState });
+const thumbnails = new Thumbnails({ onDrawn: () => canvas.setDirty(true, false) });
 
 function setStatus(text, isError) {
   status.textContent = text;
+  status.title = text;
   status.classList.toggle("error", Boolean(isError));
 }
 
-// --- node types, one per library op and per function of the document ---
-
-function registerType(name, inputs, outputs, doc, category) {
-  const type = `${category}/${name}`;
-  if (LiteGraph.registered_node_types[type]) return type;
-  class OpNode extends LGraphNode {
-    constructor() {
-      super(name);
-      // Any wire may be drawn ("*"): the checker judges it (floats promote
-      // to vectors, T is inferred), and says what is wrong on the input.
-      for (const input of inputs) this.addInput(input.name, "*", { label: `${input.name}: ${input.type}` });
-      for (const output of outputs) this.addOutput(output.name, "*", { label: `${output.name}: ${output.type}` });
-      this.op = name;
-    }
-    onConnectionsChange() { scheduleUpdate(); }
-  }
-  OpNode.title = name;
-  OpNode.desc = doc;
-  LiteGraph.registerNodeType(type, OpNode);
-  return type;
+function functionSignature(doc, name) {
+  const inputs = sourcesOf(doc, name).map((input) => `${input.name}: ${input.type}`).join(", ");
+  return `${name}(${inputs}) → ${Object.keys(doc.functions[name].outputs || {}).join(", ")}`;
 }
 
-function typeForOp(op) {
-  const entry = state.library.get(op);
-  if (entry) return registerType(op, entry.inputs, entry.outputs, entry.doc, `shadetree/${entry.family}`);
-  const fn = state.doc.functions && state.doc.functions[op];
-  if (!fn) return null;
-  const inputs = Object.entries(fn.inputs || {}).map(([name, type]) => ({ name, type: typeof type === "string" ? type : type.type }));
-  const outputs = Object.keys(fn.outputs || {}).map((name) => ({ name, type: "*" }));
-  return registerType(op, inputs, outputs, fn.doc || "", "functions");
+// --- edits and history ---
+
+const snapshot = () => ({ text: JSON.stringify(graphView.document()), scope: state.scope });
+
+// Every change of the document: into the history and the preview.
+// interactive: part of a drag (or of typing), whose edits make one step
+// and whose previews may render coarser.
+function edited({ interactive = false } = {}) {
+  if (!state.doc) return;
+  history.touch(snapshot, { dragging: interactive });
+  scheduleUpdate({ interactive });
 }
 
-// --- the document as nodes and wires ---
-
-// "id" or "id.output": a wire from a node; "$name": a param; otherwise a literal.
-function parseReference(value) {
-  if (typeof value !== "string" || value.startsWith("$")) return null;
-  const dot = value.indexOf(".");
-  return dot < 0 ? { id: value, output: null } : { id: value.slice(0, dot), output: value.slice(dot + 1) };
+function restore(step) {
+  if (!step) return;
+  graphView.rememberPositions();
+  const selected = graphView.selectedId();
+  state.doc = JSON.parse(step.snapshot.text);
+  state.scope = step.scope && state.doc.functions?.[step.scope] ? step.scope : null;
+  showScopes();
+  graphView.show();
+  showParams();
+  showFrameControls();
+  const v = selected && graphView.viewOf(selected);
+  if (v) canvas.selectNode(v);
+  else showNodePanel(null);
+  scheduleUpdate();
 }
 
-function showDocument() {
-  graph.clear();
-  const byId = new Map();
-  const depth = new Map();
-  for (const node of state.doc.nodes) {
-    const type = typeForOp(node.op);
-    const view = type ? LiteGraph.createNode(type) : new LGraphNode(node.op);
-    view.title = node.id;
-    view.shadetreeId = node.id;
-    let level = 0;
-    for (const value of Object.values(node.in || {})) {
-      const reference = parseReference(value);
-      if (reference && depth.has(reference.id)) level = Math.max(level, depth.get(reference.id) + 1);
-    }
-    depth.set(node.id, level);
-    const row = [...depth.values()].filter((d) => d === level).length - 1;
-    view.pos = [30 + level * 230, 30 + row * 130];
-    graph.add(view);
-    byId.set(node.id, view);
-  }
-  for (const node of state.doc.nodes) {
-    const target = byId.get(node.id);
-    for (const [input, value] of Object.entries(node.in || {})) {
-      const reference = parseReference(value);
-      const source = reference && byId.get(reference.id);
-      const slot = target.findInputSlot(input);
-      if (!source || slot < 0) continue;
-      const output = reference.output ? source.findOutputSlot(reference.output) : 0;
-      source.connect(Math.max(output, 0), target, slot);
-    }
-  }
-  canvas.setDirty(true, true);
-}
+const undo = () => restore(history.undo());
+const redo = () => restore(history.redo());
 
-// The document with its wires as the canvas has them. Nodes keep their
-// place in the file and every field they had (attributes, docs); new
-// nodes go last.
-function documentFromCanvas() {
-  const doc = structuredClone(state.doc);
-  const views = new Map();
-  for (const view of graph._nodes) if (view.shadetreeId) views.set(view.shadetreeId, view);
-  doc.nodes = doc.nodes.filter((node) => views.has(node.id));
-  for (const view of graph._nodes) {
-    if (!view.shadetreeId) continue;
-    let node = doc.nodes.find((n) => n.id === view.shadetreeId);
-    if (!node) {
-      node = { id: view.shadetreeId, op: view.op };
-      doc.nodes.push(node);
-    }
-    const wires = {};
-    for (const [input, value] of Object.entries(node.in || {})) if (!parseReference(value)) wires[input] = value;
-    view.inputs.forEach((slot, index) => {
-      const link = view.getInputLink(index);
-      if (!link) return;
-      const source = graph.getNodeById(link.origin_id);
-      const outputs = source.outputs || [];
-      wires[slot.name] = outputs.length > 1 ? `${source.shadetreeId}.${outputs[link.origin_slot].name}` : source.shadetreeId;
-    });
-    if (Object.keys(wires).length > 0) node.in = wires;
-    else delete node.in;
-  }
-  return doc;
+// Edited since opened or saved: the history's current step is not the file.
+const unsaved = () => Boolean(state.doc) && history.steps[history.index]?.text !== state.savedText;
+
+function showHistoryState() {
+  byId("undo").disabled = !history.canUndo;
+  byId("redo").disabled = !history.canRedo;
+  byId("save").textContent = unsaved() ? "Save •" : "Save";
 }
 
 // --- params as sliders ---
 
 function showParams() {
-  const panel = document.getElementById("params");
+  const panel = byId("params");
   panel.replaceChildren();
   for (const [name, param] of Object.entries(state.doc.params || {})) {
     const label = document.createElement("label");
@@ -160,8 +123,9 @@ function showParams() {
       slider.addEventListener("input", () => {
         param.default = param.type === "int" ? Math.round(Number(slider.value)) : Number(slider.value);
         value.textContent = ` ${param.default}`;
-        scheduleUpdate();
+        edited({ interactive: true });
       });
+      slider.addEventListener("change", () => edited());
       panel.append(slider, value);
     } else if (param.type === "color") {
       const picker = document.createElement("input");
@@ -171,74 +135,319 @@ function showParams() {
       picker.value = "#" + param.default.map(hex).join("");
       picker.addEventListener("input", () => {
         param.default = [1, 3, 5].map((i) => parseInt(picker.value.slice(i, i + 2), 16) / 255);
-        scheduleUpdate();
+        edited({ interactive: true });
       });
+      picker.addEventListener("change", () => edited());
       panel.append(picker);
     }
   }
 }
 
+// --- the selected node: its doc and attribute editors ---
+
+function showNodePanel(v) {
+  const panel = byId("node-panel");
+  const node = v?.shadetreeId && graphView.docNode(v.shadetreeId);
+  if (!node) {
+    panel.replaceChildren();
+    return;
+  }
+  const entry = state.library.get(node.op);
+  const fn = state.doc.functions?.[node.op];
+  const heading = document.createElement("h3");
+  heading.textContent = `${node.id}: ${node.op}`;
+  const doc = document.createElement("p");
+  doc.className = "doc";
+  doc.textContent = node.doc || entry?.doc || fn?.doc || "";
+  panel.replaceChildren(heading, doc);
+  const thumbnail = thumbnails.cache.get(thumbnailCacheKey(node.id));
+  if (thumbnail?.why) {
+    const why = document.createElement("p");
+    why.className = "doc";
+    why.textContent = `No thumbnail: ${thumbnail.why}`;
+    panel.append(why);
+  }
+  if (fn) {
+    const open = document.createElement("button");
+    open.textContent = `Edit ${node.op}`;
+    open.addEventListener("click", () => showScope(node.op));
+    panel.append(open);
+  }
+  const editor = attributeEditor(node, (interactive) => edited({ interactive }));
+  if (editor) panel.append(editor);
+  for (const attribute of entry?.attributes || []) panel.append(...simpleAttributeField(node, attribute));
+}
+
+// Integer and choice attributes (a noise seed, an image's wrap) as fields.
+function simpleAttributeField(node, attribute) {
+  if (attribute.kind !== "integer" && attribute.kind !== "choice") return [];
+  if (attribute.kind === "choice" && attribute.name === "basis" && node.op === "spline") return [];
+  const label = document.createElement("label");
+  label.className = "inline";
+  label.title = attribute.doc;
+  let field;
+  if (attribute.kind === "integer") {
+    field = Object.assign(document.createElement("input"), { type: "number", step: "1", value: node[attribute.name] ?? "", placeholder: "default" });
+    field.addEventListener("input", () => {
+      if (field.value === "") delete node[attribute.name];
+      else if (Number.isInteger(Number(field.value))) node[attribute.name] = Number(field.value);
+      else return;
+      edited({ interactive: true });
+    });
+    field.addEventListener("change", () => edited());
+  } else {
+    field = document.createElement("select");
+    field.append(new Option("(default)", ""), ...attribute.choices.map((choice) => new Option(choice, choice)));
+    field.value = node[attribute.name] ?? "";
+    field.addEventListener("change", () => {
+      if (field.value === "") delete node[attribute.name];
+      else node[attribute.name] = field.value;
+      edited();
+    });
+  }
+  label.append(`${attribute.name} `, field);
+  return [label];
+}
+
+// --- scopes on the canvas ---
+
+function showScopes() {
+  const select = byId("scope");
+  const names = Object.keys(state.doc.functions || {});
+  select.replaceChildren(new Option("main graph", ""), ...names.map((name) => new Option(`function ${name}`, name)));
+  select.value = graphView.scopeKey;
+  select.disabled = names.length === 0;
+  byId("scope-signature").textContent = state.scope ? functionSignature(state.doc, state.scope) : "";
+}
+
+function showScope(scope) {
+  if ((scope || null) === state.scope) return;
+  history.flush();
+  graphView.rememberPositions();
+  state.doc = graphView.document();
+  state.scope = scope || null;
+  showScopes();
+  graphView.show({ fit: !graphView.positions.has(graphView.scopeKey) });
+  showNodePanel(null);
+  scheduleUpdate();
+}
+
 // --- check and preview after every edit, the latest one winning ---
 
 let pending = null;
-let inflight = null;
+let refine = null;
+let inflight = null;       // the main preview request under way: {controller, started, done}
+let previewRequests = 0;   // main preview requests made
+let previewDrawn = 0;      // the latest of them drawn
+const patienceMs = 150;
+const lastCheck = { key: null, result: null };
 
-function scheduleUpdate() {
+function scheduleUpdate({ interactive = false } = {}) {
   if (!state.doc) return;
+  if (interactive) state.lastInteraction = performance.now();
   clearTimeout(pending);
   pending = setTimeout(update, 15);
 }
 
-function markError(diagnostic) {
-  for (const view of graph._nodes) {
-    const wrong = diagnostic && view.shadetreeId === diagnostic.node;
-    view.color = wrong ? "#8a2c2c" : undefined;
-    view.bgcolor = wrong ? "#4a1f1f" : undefined;
-    for (const slot of view.inputs || []) {
-      const wrongInput = wrong && slot.name === diagnostic.input;
-      slot.color_on = wrongInput ? "#ff5555" : undefined;
-      slot.color_off = wrongInput ? "#ff5555" : undefined;
-      slot.label = slot.label.replace(/ ⚠$/, "") + (wrongInput ? " ⚠" : "");
-    }
-  }
-  document.getElementById("diagnostic").textContent = diagnostic ? diagnostic.text : "";
-  canvas.setDirty(true, true);
+// Volume previews are slow: while the user drags, or an animation plays,
+// they render at 1/2 or 1/4 of the size (1/4 when the full one is slow).
+function previewSide() {
+  const coarse = state.doc.kind === "volume" &&
+                 (state.playing || performance.now() - state.lastInteraction < refineDelayMs);
+  if (!coarse) return previewSize;
+  return state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
 }
 
 async function update() {
   const sequence = ++state.sequence;
-  const body = JSON.stringify(documentFromCanvas(), null, 2);
-  const query = state.path ? `path=${encodeURIComponent(state.path)}&` : "";
-  const check = await (await api("POST", `/api/check?${query.slice(0, -1)}`, body)).json();
-  if (sequence !== state.sequence) return;
+  thumbnails.cancel();
+  clearTimeout(refine);
+  const doc = graphView.document();
+  const body = JSON.stringify(doc, null, 2);
+  const checkKey = `${state.path}\n${body}`;
+  try {
+    if (lastCheck.key !== checkKey) {
+      const response = await api("POST", `/api/check?${pathQuery().slice(0, -1)}`, body);
+      const result = response.ok ? await response.json() : { ok: false, error: { text: await errorOf(response) } };
+      if (sequence !== state.sequence) return;
+      lastCheck.key = checkKey;
+      lastCheck.result = result;
+    }
+  } catch (error) {
+    setStatus(String(error), true);
+    return;
+  }
+  const check = lastCheck.result;
   state.lastError = check.ok ? null : check.error;
-  markError(state.lastError);
+  graphView.markError(state.lastError);
+  byId("diagnostic").textContent = state.lastError ? state.lastError.text : "";
   if (!check.ok) {
     setStatus(check.error.text, true);
     return;
   }
-  if (inflight) inflight.abort();
-  inflight = new AbortController();
-  try {
-    const response = await fetch(`/api/preview?${query}width=${previewSize}&height=${previewSize}`, {
-      method: "POST", body, signal: inflight.signal, headers: { "X-Shadetree-Token": token } });
-    if (sequence !== state.sequence) return;
-    if (!response.ok) {
-      setStatus((await response.json()).error, true);
-      return;
+  const side = previewSide();
+  const previewBody = JSON.stringify(view.apply(doc));
+  const previewKey = `${side} ${state.frame}\n${previewBody}`;
+  // Unless this very picture is shown and no other is on its way.
+  const needed = () => inflight || previewKey !== state.drawnKey;
+  if (needed()) {
+    // A preview started moments ago may finish, so that a drag keeps
+    // showing pictures; one that takes longer is superseded.
+    const age = inflight ? performance.now() - inflight.started : Infinity;
+    if (age < patienceMs) {
+      await Promise.race([inflight.done, new Promise((resolve) => setTimeout(resolve, patienceMs - age))]);
+      if (sequence !== state.sequence) return;
     }
-    const pixels = new Uint8ClampedArray(await response.arrayBuffer());
-    const width = Number(response.headers.get("X-Width"));
-    const height = Number(response.headers.get("X-Height"));
-    const preview = document.getElementById("preview");
-    preview.getContext("2d").putImageData(new ImageData(pixels, width, height), 0, 0);
+    if (needed() && (!(await requestPreview(previewBody, side, previewKey)) || sequence !== state.sequence)) return;
+  }
+  if (state.playing) {
+    nextFrame();
+  } else if (side < previewSize) {
+    refine = setTimeout(() => scheduleUpdate(), refineDelayMs);
+  } else {
+    refreshThumbnails(doc, previewBody);
+  }
+}
+
+// Draws the preview, unless a newer one was drawn already; false if it
+// was superseded or refused. Requests of slot "main" supersede the one
+// in flight: the server stops it and answers 409.
+async function requestPreview(body, side, key) {
+  inflight?.controller.abort();
+  const id = ++previewRequests;
+  const controller = new AbortController();
+  let finished;
+  inflight = { controller, started: performance.now(), done: new Promise((resolve) => { finished = resolve; }) };
+  const started = inflight.started;
+  try {
+    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main`,
+                               body, controller.signal);
+    if (response.status === 409) return false;
+    if (!response.ok) {
+      setStatus(await errorOf(response), true);
+      return false;
+    }
+    const image = await imageOf(response);
+    if (id < previewDrawn) return false;
+    previewDrawn = id;
+    state.drawnKey = key;
+    drawPreview(image);
+    if (side === previewSize) state.fullPreviewMs = performance.now() - started;
     state.previews += 1;
-    document.getElementById("preview-info").textContent =
-      `${width}x${height} in ${Number(response.headers.get("X-Milliseconds")).toFixed(1)} ms (kernel: ${response.headers.get("X-Kernel")})`;
+    const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
+    byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (kernel: ${response.headers.get("X-Kernel")})` +
+      (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "");
+    byId("reset-view").disabled = !view.changed;
     setStatus(`${state.path || "untitled"}: ok`, false);
+    return true;
   } catch (error) {
     if (error.name !== "AbortError") setStatus(String(error), true);
+    return false;
+  } finally {
+    finished();
+    if (inflight?.controller === controller) inflight = null;
   }
+}
+
+// A coarse preview is scaled up, smoothly, to the preview's size.
+function drawPreview(image) {
+  const context = previewCanvas.getContext("2d");
+  if (image.width === previewCanvas.width && image.height === previewCanvas.height) {
+    context.putImageData(image, 0, 0);
+    return;
+  }
+  const scratch = document.createElement("canvas");
+  scratch.width = image.width;
+  scratch.height = image.height;
+  scratch.getContext("2d").putImageData(image, 0, 0);
+  context.imageSmoothingEnabled = true;
+  context.drawImage(scratch, 0, 0, previewCanvas.width, previewCanvas.height);
+}
+
+// --- thumbnails ---
+
+const thumbnailCacheKey = (id) => `${graphView.scopeKey}/${id}`;
+
+// What the output of node `id` depends on: the nodes upstream of it, the
+// params they read, the functions they call, the frame if time is read,
+// and the render settings.
+function thumbnailKey(doc, id, render) {
+  const nodes = new Map(scopeBody(doc, state.scope).nodes.map((n) => [n.id, n]));
+  const upstream = new Map();
+  const dollars = new Set();
+  const stack = [id];
+  while (stack.length > 0) {
+    const node = nodes.get(stack.pop());
+    if (!node || upstream.has(node.id)) continue;
+    upstream.set(node.id, node);
+    for (const value of Object.values(node.in || {})) {
+      if (typeof value !== "string") continue;
+      if (value.startsWith("$")) dollars.add(value.slice(1));
+      else stack.push(parseReference(value).id);
+    }
+  }
+  const calls = [...upstream.values()].some((n) => doc.functions?.[n.op]);
+  const params = [...dollars].map((name) => [name, doc.params?.[name]?.default]);
+  const timed = usesTime([...upstream.values()], calls ? doc.functions : {});
+  return JSON.stringify([[...upstream.values()], calls ? doc.functions : null, params, timed ? state.frame : 0, doc.kind, render]);
+}
+
+function refreshThumbnails(doc, previewBody) {
+  if (state.scope) return;  // the server renders thumbnails of the main graph's nodes only
+  // A volume graph's thumbnails are slices through its bounds: the camera
+  // does not change them.
+  const render = doc.kind === "volume" ? doc.render?.volume : JSON.parse(previewBody).render;
+  const jobs = graphView.opViews().map((v) => ({
+    cacheKey: thumbnailCacheKey(v.shadetreeId),
+    key: thumbnailKey(doc, v.shadetreeId, render),
+    url: `/api/preview?${pathQuery()}node=${encodeURIComponent(v.shadetreeId)}&width=${thumbnailSide}&height=${thumbnailSide}` +
+         `&frame=${state.frame}&slot=thumb-${encodeURIComponent(v.shadetreeId)}`,
+    body: previewBody,
+  }));
+  thumbnails.refresh(jobs).catch((error) => setStatus(`thumbnails: ${error}`, true));
+}
+
+// --- frames ---
+
+function usesTime(nodes, functions) {
+  const timed = (list) => list.some((n) => n.op === "frame" || n.op === "time");
+  return timed(nodes) || Object.values(functions || {}).some((fn) => timed(fn.nodes || []));
+}
+
+function showFrameControls() {
+  const shown = usesTime(state.doc.nodes, state.doc.functions);
+  byId("frame-row").hidden = !shown;
+  if (!shown) setPlaying(false);
+  byId("frame").value = state.frame;
+  byId("frame-value").textContent = frameText();
+}
+
+const frameText = () => `frame ${state.frame} (${(state.frame / framesPerSecond).toFixed(2)} s)`;
+
+function setFrame(frame, interactive) {
+  state.frame = frame;
+  byId("frame").value = frame;
+  byId("frame-value").textContent = frameText();
+  scheduleUpdate({ interactive });
+}
+
+function setPlaying(playing) {
+  state.playing = playing;
+  byId("play").textContent = playing ? "❚❚" : "▶";
+  if (playing) setFrame(state.frame, true);
+  else scheduleUpdate();
+}
+
+let lastFrameAt = 0;
+
+// The next frame once this one is drawn, at 24 frames a second at most.
+function nextFrame() {
+  const wait = Math.max(0, 1000 / framesPerSecond - (performance.now() - lastFrameAt));
+  setTimeout(() => {
+    if (!state.playing) return;
+    lastFrameAt = performance.now();
+    setFrame((state.frame + 1) % (Number(byId("frame").max) + 1), true);
+  }, wait);
 }
 
 // --- files ---
@@ -246,70 +455,180 @@ async function update() {
 async function open(path) {
   const response = await api("GET", `/api/graph?path=${encodeURIComponent(path)}`);
   if (!response.ok) {
-    setStatus((await response.json()).error, true);
+    setStatus(await errorOf(response), true);
     return;
   }
+  setPlaying(false);
   state.path = path;
   state.doc = await response.json();
-  showDocument();
+  state.scope = null;
+  state.frame = state.doc.render?.frame ?? 0;
+  state.drawnKey = null;
+  state.lastError = null;
+  graphView.positions.clear();
+  thumbnails.cancel();
+  thumbnails.cache.clear();
+  view.clear();
+  const size = state.doc.render?.size || [512, 512];
+  byId("export-width").value = size[0];
+  byId("export-height").value = size[1];
+  byId("graph-list").value = path;
+  showScopes();
+  graphView.show({ fit: true });
   showParams();
+  showFrameControls();
+  showNodePanel(null);
+  const opened = snapshot();
+  state.savedText = opened.text;
+  history.reset(opened);
   await update();
 }
 
 async function save() {
-  const body = JSON.stringify(documentFromCanvas(), null, 2) + "\n";
-  const response = await api("PUT", `/api/graph?path=${encodeURIComponent(state.path)}`, body);
+  return write(state.path, false);
+}
+
+// PUT the document; isNew: the server refuses (409) to overwrite a file.
+async function write(path, isNew) {
+  if (!state.doc) return false;
+  history.flush();
+  const text = JSON.stringify(graphView.document(), null, 2) + "\n";
+  const response = await api("PUT", `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`, text);
+  if (!response.ok) {
+    setStatus(await errorOf(response), true);
+    return false;
+  }
   const result = await response.json();
-  setStatus(response.ok ? `saved ${result.saved}` : result.error, !response.ok);
-  return response.ok;
+  state.savedText = JSON.stringify(JSON.parse(text));
+  setStatus(`saved ${result.saved}`, false);
+  showHistoryState();
+  return true;
 }
 
-function addNode(op) {
-  const type = typeForOp(op);
-  if (!type) return null;
-  const view = LiteGraph.createNode(type);
-  let n = 1;
-  while (state.doc.nodes.some((node) => node.id === `${op}${n}`) || graph._nodes.some((v) => v.shadetreeId === `${op}${n}`)) n += 1;
-  view.shadetreeId = `${op}${n}`;
-  view.title = view.shadetreeId;
-  view.op = op;
-  view.pos = [40, 40];
-  graph.add(view);
+// Save as NAME(.json): a new file of the served folder, then the one open.
+async function saveAs(name) {
+  const path = name.trim().endsWith(".json") ? name.trim() : `${name.trim()}.json`;
+  if (path === ".json") return false;
+  if (!(await write(path, true))) return false;
+  state.path = path;
+  const list = byId("graph-list");
+  if (![...list.options].some((option) => option.value === path)) {
+    const later = [...list.options].find((option) => option.value.localeCompare(path) > 0);
+    list.insertBefore(new Option(path, path), later || null);
+  }
+  list.value = path;
   scheduleUpdate();
-  return view;
+  return true;
 }
 
-// Wires output `output` of node `from` into input `input` of node `to` (ids).
-function connect(from, output, to, input) {
-  const source = graph._nodes.find((v) => v.shadetreeId === from);
-  const target = graph._nodes.find((v) => v.shadetreeId === to);
-  source.connect(source.findOutputSlot(output), target, target.findInputSlot(input));
-  scheduleUpdate();
+function showSaveAs(shown) {
+  byId("save-as-form").hidden = !shown;
+  byId("save-as").hidden = shown;
+  if (shown) {
+    const input = byId("save-as-name");
+    input.value = state.path ? state.path.replace(/\.json$/, "_copy.json") : "untitled.json";
+    input.focus();
+    input.select();
+  }
+}
+
+// Renders the document (as its file frames it, not as the preview is
+// navigated) at the size asked, and offers the image as a download.
+async function exportImage() {
+  const width = Number(byId("export-width").value), height = Number(byId("export-height").value);
+  const format = byId("export-format").value;
+  if (!(width >= 1 && height >= 1)) {
+    setStatus("export: width and height must be positive", true);
+    return null;
+  }
+  setStatus(`exporting ${width}x${height} ${format}…`, false);
+  const response = await api("POST", `/api/export?${pathQuery()}width=${width}&height=${height}&frame=${state.frame}&format=${format}`,
+                             JSON.stringify(graphView.document(), null, 2));
+  if (!response.ok) {
+    setStatus(`export: ${await errorOf(response)}`, true);
+    return null;
+  }
+  const blob = await response.blob();
+  if (state.lastExport) URL.revokeObjectURL(state.lastExport.url);
+  const name = `${(state.path || "untitled").replace(/^.*\//, "").replace(/\.json$/, "")}.${format}`;
+  state.lastExport = { url: URL.createObjectURL(blob), name, type: blob.type, size: blob.size };
+  const link = byId("export-link");
+  link.href = state.lastExport.url;
+  link.download = name;
+  link.textContent = name;
+  link.hidden = false;
+  link.click();
+  setStatus(`exported ${name} (${Math.ceil(blob.size / 1024)} KB)`, false);
+  return state.lastExport;
+}
+
+// Undo and redo everywhere but in text fields, which have their own.
+function onKey(event) {
+  const control = event.ctrlKey || event.metaKey;
+  if (!control || event.target.matches("textarea, input:not([type=range]):not([type=color]):not([type=button])")) return;
+  const key = event.key.toLowerCase();
+  if (key === "z" && !event.shiftKey) undo();
+  else if ((key === "z" && event.shiftKey) || key === "y") redo();
+  else if (key === "s") save();
+  else return;
+  event.preventDefault();
+  event.stopPropagation();
 }
 
 async function start() {
   const nodes = await (await api("GET", "/api/nodes")).json();
-  const palette = document.getElementById("palette");
+  const palette = byId("palette");
   for (const op of nodes.ops) {
     state.library.set(op.name, op);
-    const option = document.createElement("option");
-    option.value = op.name;
-    option.textContent = `${op.family}: ${op.name}`;
+    const option = new Option(`${op.family}: ${op.name}`, op.name);
     option.title = op.doc;
     palette.append(option);
   }
   const graphs = (await (await api("GET", "/api/graphs")).json()).graphs;
-  const list = document.getElementById("graph-list");
+  const list = byId("graph-list");
   for (const path of graphs) list.append(new Option(path, path));
-  list.addEventListener("change", () => open(list.value));
-  document.getElementById("save").addEventListener("click", save);
-  document.getElementById("add-node").addEventListener("click", () => addNode(palette.value));
-  graph.onNodeRemoved = scheduleUpdate;
-  const resize = () => canvas.resize();
-  window.addEventListener("resize", resize);
-  resize();
+  list.addEventListener("change", () => {
+    history.flush();
+    if (unsaved() && !confirm(`Discard the unsaved changes to ${state.path}?`)) list.value = state.path;
+    else open(list.value);
+  });
+  byId("save").addEventListener("click", save);
+  byId("save-as").addEventListener("click", () => showSaveAs(true));
+  byId("save-as-cancel").addEventListener("click", () => showSaveAs(false));
+  byId("save-as-form").addEventListener("submit", async (event) => {
+    event.preventDefault();
+    if (await saveAs(byId("save-as-name").value)) showSaveAs(false);
+  });
+  byId("save-as-name").addEventListener("keydown", (event) => event.key === "Escape" && showSaveAs(false));
+  byId("undo").addEventListener("click", undo);
+  byId("redo").addEventListener("click", redo);
+  byId("export").addEventListener("click", exportImage);
+  byId("add-node").addEventListener("click", () => graphView.addNode(palette.value));
+  byId("scope").addEventListener("change", (event) => showScope(event.target.value));
+  byId("reset-view").addEventListener("click", () => view.reset());
+  byId("frame").addEventListener("input", (event) => setFrame(Number(event.target.value), true));
+  byId("frame").addEventListener("change", (event) => setFrame(Number(event.target.value), false));
+  byId("play").addEventListener("click", () => setPlaying(!state.playing));
+  document.addEventListener("keydown", onKey, true);
+  canvas.onNodeSelected = showNodePanel;
+  canvas.onNodeDblClicked = (v) => state.doc.functions?.[v.op] && showScope(v.op);
+  canvas.onNodeDeselected = () => {
+    if (!graphView.selectedId()) showNodePanel(null);
+  };
+  new ResizeObserver(() => canvas.resize()).observe(byId("graph-host"));
+  canvas.resize();
   graph.start();
+  showHistoryState();
   if (graphs.length > 0) await open(graphs[0]);
 }
 
-window.shadetreeEditor = { state, graph, canvas, open, save, addNode, connect, documentFromCanvas, ready: start() };
+// For tests and the console.
+window.shadetreeEditor = {
+  state, graph, canvas, graphView, history, view, thumbnails,
+  open, save, saveAs, exportImage, showScope, undo, redo,
+  addNode: (op) => graphView.addNode(op),
+  connect: (...ends) => graphView.connect(...ends),
+  documentFromCanvas: () => graphView.document(),
+  viewOf: (id) => graphView.viewOf(id),
+  ready: start(),
+};

@@ -1,10 +1,13 @@
 // The editor in headless Chromium (Debian's, driven by puppeteer-core),
 // against a real `shadetree serve` of a copy of gallery graphs: open a
-// graph and see its preview; drag a param slider and see the preview
-// change with no compile; add a noise node and wire it in; wire a vec2
-// into a vec3 input and see the checker's error on that input; save, and
-// check the saved file with `shadetree check`. With a third argument, the
-// screenshot of the editor with the graph opened (docs/editor.png).
+// graph and see its preview and node thumbnails; drag a param slider and
+// see the preview change with no compile; add a noise node and wire it in;
+// wire a vec2 into a vec3 input and see the checker's error on that input;
+// save, and check the saved file with `shadetree check`; show a function's
+// body, drag a control point of its spline with the mouse and see the
+// preview change, undo and redo it; export a PNG; save as a new file, and
+// check it. With a third argument, the screenshot of the editor with the
+// graph opened and its thumbnails drawn (docs/editor.png).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
 import { copyFileSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
@@ -45,16 +48,28 @@ try {
   page.on("pageerror", (error) => errors.push(String(error)));
   await page.goto(url);
   await page.waitForFunction(() => window.shadetreeEditor && window.shadetreeEditor.state.previews > 0, { timeout: 20000 });
-  const previewPixels = () => page.evaluate(() => {
-    const data = document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data;
-    let sum = 0;
-    for (let i = 0; i < data.length; i += 97) sum = (sum * 31 + data[i]) % 1000000007;
-    return sum;
+  await page.evaluate(() => {
+    window.previewChecksum = () => {
+      const data = document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data;
+      let sum = 0;
+      for (let i = 0; i < data.length; i += 97) sum = (sum * 31 + data[i]) % 1000000007;
+      return sum;
+    };
   });
+  const previewPixels = () => page.evaluate(() => window.previewChecksum());
   const before = await previewPixels();
-  if (screenshot) await page.screenshot({ path: screenshot });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.graph._nodes.length > 5), true, "the graph's nodes are on the canvas");
   console.log("opened marble.json: preview drawn");
+
+  // Thumbnails come after the preview, one node at a time.
+  await page.waitForFunction(() => {
+    const { thumbnails, graphView } = window.shadetreeEditor;
+    return thumbnails.pending === 0 && graphView.thumbnailsDrawn > 0;
+  }, { timeout: 20000 });
+  const pictured = await page.evaluate(() => [...window.shadetreeEditor.thumbnails.cache].filter(([, entry]) => entry.image).map(([key]) => key));
+  assert.ok(pictured.includes("/turb"), `a thumbnail of turb (got ${pictured})`);
+  if (screenshot) await page.screenshot({ path: screenshot });
+  console.log(`thumbnails drawn on ${pictured.length} nodes`);
 
   // Drag the "scale" slider with the mouse.
   const compilesBefore = (await stats()).compiles;
@@ -106,6 +121,91 @@ try {
   assert.notEqual(saved.params.scale.default, 6, "the dragged param value is saved");
   assert.ok(saved.functions.marble_color, "fields the editor does not show are kept");
   console.log("saved: shadetree check accepts the file");
+
+  // The spline is in function marble_color: show its body, click its
+  // spline node, and drag a control point up in the side panel's curve.
+  await page.select("#scope", "marble_color");
+  await page.waitForFunction(() => window.shadetreeEditor.viewOf("ramp"));
+  // Litegraph finds the node under the pointer by the bounds it computes
+  // when it draws a frame.
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  const title = await page.evaluate(() => {
+    const { canvas, viewOf } = window.shadetreeEditor;
+    const view = viewOf("ramp");
+    const [x, y] = canvas.ds.convertOffsetToCanvas([view.pos[0] + 40, view.pos[1] - 15]);
+    const box = canvas.canvas.getBoundingClientRect();
+    return [box.left + x, box.top + y];
+  });
+  await page.mouse.click(title[0], title[1]);
+  await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
+  const knotsBefore = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
+  await page.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
+  const beforeDrag = await previewPixels();
+  const previewsBeforeDrag = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  const curve = await (await page.$(".curve-editor canvas")).boundingBox();
+  const knot = await page.evaluate(() => document.querySelector(".curve-editor canvas").curveEditor.pointOf(3, 0));
+  await page.mouse.move(curve.x + knot[0], curve.y + knot[1]);
+  await page.mouse.down();
+  for (let step = 1; step <= 8; ++step) await page.mouse.move(curve.x + knot[0], curve.y + knot[1] - step * 8);
+  await page.mouse.up();
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeDrag);
+  const knotsDragged = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
+  assert.notEqual(knotsDragged, knotsBefore, "the drag moved a knot");
+  await page.waitForFunction(() => window.shadetreeEditor.history.canUndo && !window.shadetreeEditor.history.take, { timeout: 5000 });
+  await page.waitForFunction((sum) => window.shadetreeEditor.state.previews > 0 && window.previewChecksum() !== sum, { timeout: 10000 }, beforeDrag);
+  console.log(`dragged spline knot 3 of marble_color.ramp: preview changed`);
+
+  // Undo (Ctrl+Z) brings the knots and the picture back; redo (Ctrl+Shift+Z) the drag.
+  const ramp = () => page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
+  await page.keyboard.down("Control");
+  await page.keyboard.press("z");
+  await page.keyboard.up("Control");
+  assert.equal(await ramp(), knotsBefore, "undo restores the knots");
+  await page.waitForFunction((sum) => window.previewChecksum() === sum, { timeout: 10000 }, beforeDrag);
+  await page.keyboard.down("Control");
+  await page.keyboard.down("Shift");
+  await page.keyboard.press("z");
+  await page.keyboard.up("Shift");
+  await page.keyboard.up("Control");
+  assert.equal(await ramp(), knotsDragged, "redo repeats the drag");
+  console.log("undo: the knots and the preview came back; redo: the drag again");
+
+  // Export a PNG: the server's image file, offered as a download.
+  await page.evaluate(() => {
+    document.getElementById("export-width").value = 96;
+    document.getElementById("export-height").value = 64;
+  });
+  await page.select("#export-format", "png");
+  await page.click("#export");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastExport, { timeout: 20000 });
+  const exported = await page.evaluate(async () => {
+    const { url, name, type } = window.shadetreeEditor.state.lastExport;
+    const bytes = new Uint8Array(await (await fetch(url)).arrayBuffer());
+    return { name, type, head: [...bytes.slice(0, 8)], download: document.getElementById("export-link").download };
+  });
+  assert.deepEqual(exported.head, [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a], "a PNG signature");
+  assert.equal(exported.download, "marble.png");
+  console.log(`exported ${exported.name} (${exported.type})`);
+
+  // Save as: a name that exists is refused; a new one is written and opened.
+  const saveAs = async (name) => {
+    await page.click("#save-as");
+    await page.click("#save-as-name", { clickCount: 3 });
+    await page.keyboard.type(name);
+    await page.keyboard.press("Enter");
+  };
+  await saveAs("marble");
+  await page.waitForFunction(() => document.getElementById("status").classList.contains("error"), { timeout: 5000 });
+  assert.match(await page.evaluate(() => document.getElementById("status").textContent), /exists/);
+  await page.click("#save-as-cancel");
+  await saveAs("marble_variant");
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "marble_variant.json", { timeout: 5000 });
+  assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "marble_variant.json");
+  const variant = spawnSync(binary, ["check", join(folder, "marble_variant.json")], { encoding: "utf8" });
+  assert.equal(variant.status, 0, variant.stderr);
+  const variantDoc = JSON.parse(readFileSync(join(folder, "marble_variant.json"), "utf8"));
+  assert.equal(JSON.stringify(variantDoc.functions.marble_color.nodes.find((n) => n.id === "ramp").knots), knotsDragged);
+  console.log("saved as marble_variant.json: shadetree check accepts it, with the dragged knot");
   assert.deepEqual(errors, [], "no script errors");
 } catch (error) {
   failed = true;

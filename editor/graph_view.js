@@ -1,0 +1,378 @@
+// The node canvas (@comfyorg/litegraph) as a view of one scope of the
+// document, the main graph or a function's body: its nodes and wires,
+// with the scope's sources ("$name": params or function inputs) and
+// outputs as two boundary nodes. show() builds the canvas from the
+// document; document() reads the document back with the canvas's wires.
+import { LGraph, LGraphCanvas, LGraphNode, LiteGraph } from "/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js";
+import { thumbnailSide } from "./thumbnails.js";
+
+// The node list and outputs of a scope (null: the main graph).
+export function scopeBody(doc, scope) {
+  return scope ? doc.functions[scope] : doc;
+}
+
+// What "$name" refers to in a scope: the params, or the function's inputs.
+export function sourcesOf(doc, scope) {
+  const declared = (scope ? doc.functions[scope].inputs : doc.params) || {};
+  return Object.entries(declared).map(([name, spec]) => ({ name, type: typeof spec === "string" ? spec : spec.type }));
+}
+
+// "id" or "id.output": a wire from a node; "$name": a param or function input.
+export function parseReference(value) {
+  if (typeof value !== "string" || value.startsWith("$")) return null;
+  const dot = value.indexOf(".");
+  return dot < 0 ? { id: value, output: null } : { id: value.slice(0, dot), output: value.slice(dot + 1) };
+}
+
+const nodeWidth = 150;
+const columnGap = 40;
+const rowGap = 24;
+const thumbnailRoom = thumbnailSide + 10;
+
+// What a node made on the canvas starts with, for ops that need attributes.
+const newNodeAttributes = {
+  spline: { basis: "catmull-rom", knots: [[0, 0, 0], [0, 0, 0], [1, 1, 1], [1, 1, 1]] },
+  color_table: { entries: [[0, 0, 0], [1, 1, 1]] },
+  table1d: { values: [0, 1] },
+  table2d: { values: [[0, 0], [1, 1]] },
+};
+
+const literalText = (value) => (Array.isArray(value) ? `[${value.join(", ")}]` : String(value));
+const titleOf = (id, op) => (id === op ? id : `${id} (${op})`);
+const positionKey = (v) => v.shadetreeId ?? `#${v.boundary}`;
+
+// A node of the library or of a function of the document. In the main
+// graph it has room under its slots for a thumbnail of its output (the
+// server renders those for main-graph nodes only).
+class ShadetreeNode extends LGraphNode {
+  onConnectionsChange() { this.graph?.view.edited(); }
+  onDrawBackground(ctx) {
+    const view = this.graph?.view;
+    if (this.flags.collapsed || !this.shadetreeId || !view || view.state.scope) return;
+    const entry = view.thumbnailOf(this.shadetreeId);
+    const x = (this.size[0] - thumbnailSide) / 2, y = this.size[1] - thumbnailSide - 5;
+    if (entry?.image) {
+      ctx.imageSmoothingEnabled = false;
+      ctx.drawImage(entry.image, x, y, thumbnailSide, thumbnailSide);
+      view.thumbnailsDrawn += 1;
+      return;
+    }
+    ctx.fillStyle = "rgba(0, 0, 0, 0.25)";
+    ctx.fillRect(x, y, thumbnailSide, thumbnailSide);
+    if (entry?.note) {
+      ctx.fillStyle = "#888";
+      ctx.font = "10px sans-serif";
+      ctx.textAlign = "center";
+      ctx.fillText(entry.note, this.size[0] / 2, y + thumbnailSide / 2 + 3);
+    }
+  }
+}
+
+// The ends of a scope. They are part of the view, not nodes of the
+// document, and cannot be deleted or copied.
+class BoundaryNode extends LGraphNode {
+  constructor(title, boundary) {
+    super(title);
+    this.boundary = boundary;
+    this.block_delete = true;
+    this.clonable = false;
+    this.color = "#2e4a3e";
+    this.bgcolor = "#22332c";
+  }
+  onConnectionsChange() { this.graph?.view.edited(); }
+}
+
+// Litegraph truncates a title to the node's width less a title height at
+// each end.
+const measure = document.createElement("canvas").getContext("2d");
+
+export class GraphView {
+  // state: the editor's {library, doc, scope, lastError}, read here (and
+  // new nodes added to state.doc); onEdit(): the user changed the scope's
+  // nodes or wires; thumbnailOf(id): the thumbnail entry of a node, or null.
+  constructor(canvasElement, { state, onEdit, thumbnailOf }) {
+    this.state = state;
+    this.onEdit = onEdit;
+    this.thumbnailOf = thumbnailOf;
+    this.thumbnailsDrawn = 0;
+    this.showing = false;  // while show() rebuilds the canvas: no edits
+    this.positions = new Map();  // scope -> node id or #boundary -> [x, y], kept across shows
+    this.graph = new LGraph();
+    this.graph.view = this;
+    this.element = canvasElement;
+    this.canvas = new LGraphCanvas(canvasElement, this.graph);
+    // Whole graphs are shown zoomed out: keep titles and slot names
+    // readable there, and leave out litegraph's debugging overlay.
+    this.canvas.low_quality_zoom_threshold = 0.4;
+    this.canvas.show_info = false;
+    this.canvas.render_canvas_border = false;
+    this.graph.onNodeAdded = (v) => {
+      if (this.showing || !v.op || v.shadetreeId) return;
+      this.adopt(v);
+      this.edited();
+    };
+    this.graph.onNodeRemoved = () => this.edited();
+  }
+
+  edited() {
+    if (!this.showing) this.onEdit();
+  }
+
+  get scopeKey() { return this.state.scope ?? ""; }
+  opViews() { return this.graph._nodes.filter((v) => v.shadetreeId); }
+  boundaryView(boundary) { return this.graph._nodes.find((v) => v.boundary === boundary); }
+  viewOf(id) { return this.graph._nodes.find((v) => v.shadetreeId === id); }
+  docNode(id) { return scopeBody(this.state.doc, this.state.scope).nodes.find((n) => n.id === id); }
+  selectedId() { return Object.values(this.canvas.selected_nodes || {}).find((v) => v.shadetreeId)?.shadetreeId ?? null; }
+
+  // Registered, so that litegraph's own search and copy-paste make nodes
+  // of it too; a function's type is registered again when its signature
+  // changes.
+  registerType(name, inputs, outputs, doc, category) {
+    const type = `${category}/${name}`;
+    const signature = JSON.stringify([inputs, outputs]);
+    if (LiteGraph.registered_node_types[type]?.signature === signature) return type;
+    class OpNode extends ShadetreeNode {
+      constructor() {
+        super(name);
+        // Any wire may be drawn ("*"): the checker judges it (floats
+        // promote to vectors, T is inferred), and says what is wrong on
+        // the input.
+        for (const input of inputs) this.addInput(input.name, "*", { label: `${input.name}: ${input.type}` });
+        for (const output of outputs) this.addOutput(output.name, "*", { label: `${output.name}: ${output.type}` });
+        this.op = name;
+      }
+    }
+    OpNode.title = name;
+    OpNode.desc = doc;
+    OpNode.signature = signature;
+    LiteGraph.registerNodeType(type, OpNode);
+    return type;
+  }
+
+  typeForOp(op) {
+    const entry = this.state.library.get(op);
+    if (entry) return this.registerType(op, entry.inputs, entry.outputs, entry.doc, `shadetree/${entry.family}`);
+    const fn = this.state.doc.functions?.[op];
+    if (!fn) return null;
+    const outputs = Object.keys(fn.outputs || {}).map((name) => ({ name, type: "*" }));
+    return this.registerType(op, sourcesOf(this.state.doc, op), outputs, fn.doc || "", "functions");
+  }
+
+  // Wide enough for the title, tall enough for a thumbnail in the main graph.
+  fitSize(v) {
+    measure.font = this.canvas.title_text_font;
+    const title = Math.ceil(measure.measureText(v.title).width) + 2 * LiteGraph.NODE_TITLE_HEIGHT + 4;
+    const [width, height] = v.computeSize();
+    v.size = [Math.max(width, nodeWidth, title), height + (v.op && !this.state.scope ? thumbnailRoom : 0)];
+  }
+
+  // A node made by the palette, litegraph's search or a paste gets a
+  // fresh id, and a place in the document with the attributes its op needs.
+  adopt(v) {
+    let n = 1;
+    while (this.docNode(`${v.op}${n}`) || this.viewOf(`${v.op}${n}`)) n += 1;
+    v.shadetreeId = `${v.op}${n}`;
+    v.title = titleOf(v.shadetreeId, v.op);
+    this.fitSize(v);
+    scopeBody(this.state.doc, this.state.scope).nodes.push(
+      { id: v.shadetreeId, op: v.op, ...structuredClone(newNodeAttributes[v.op] || {}) });
+  }
+
+  addNode(op) {
+    const type = this.typeForOp(op);
+    if (!type) return null;
+    const v = LiteGraph.createNode(type);
+    v.pos = this.canvas.ds.convertCanvasToOffset([40, 40]);
+    this.graph.add(v);
+    return v;
+  }
+
+  // Wires output `output` of node `from` into input `input` of node `to`
+  // (ids; "$" for the params or function inputs, "#outputs" for the outputs).
+  connect(from, output, to, input) {
+    const source = from === "$" ? this.boundaryView("sources") : this.viewOf(from);
+    const target = to === "#outputs" ? this.boundaryView("outputs") : this.viewOf(to);
+    source.connect(source.findOutputSlot(output), target, target.findInputSlot(input));
+  }
+
+  rememberPositions() {
+    this.positions.set(this.scopeKey, new Map(this.graph._nodes.map((v) => [positionKey(v), [...v.pos]])));
+  }
+
+  // Rebuilds the canvas from state.doc's scope state.scope; nodes keep the
+  // places they had when this scope was last shown.
+  show({ fit = false } = {}) {
+    const { doc, scope } = this.state;
+    this.showing = true;
+    this.canvas.deselectAll();
+    this.graph.clear();
+    const body = scopeBody(doc, scope);
+    const views = new Map();
+    const sources = new BoundaryNode(scope ? "inputs" : "params", "sources");
+    for (const source of sourcesOf(doc, scope)) sources.addOutput(source.name, "*", { label: `$${source.name}: ${source.type}` });
+    const outputs = new BoundaryNode("outputs", "outputs");
+    for (const name of Object.keys(body.outputs || {})) outputs.addInput(name, "*", { label: name });
+    // Columns by depth: a node one right of its deepest input; the
+    // sources in the first column, the outputs in the last.
+    const depth = new Map();
+    const columns = [];
+    const place = (v, column) => (columns[column] ??= []).push(v);
+    if (sources.outputs?.length) place(sources, 0);
+    for (const node of body.nodes) {
+      const type = this.typeForOp(node.op);
+      const v = type ? LiteGraph.createNode(type) : new ShadetreeNode(node.op);
+      v.title = titleOf(node.id, node.op);
+      v.shadetreeId = node.id;
+      v.op = node.op;
+      this.fitSize(v);
+      let level = 1;
+      for (const value of Object.values(node.in || {})) {
+        const reference = parseReference(value);
+        if (reference && depth.has(reference.id)) level = Math.max(level, depth.get(reference.id) + 1);
+      }
+      depth.set(node.id, level);
+      place(v, level);
+      views.set(node.id, v);
+    }
+    place(outputs, columns.length);
+    this.layOut(columns.filter(Boolean));
+    this.wire(views, sources, outputs);
+    this.showing = false;
+    if (fit) this.fit();
+    this.markError(this.state.lastError);
+  }
+
+  // Columns left to right, each centred on one line as wires mostly run
+  // along it; remembered places win.
+  layOut(columns) {
+    const remembered = this.positions.get(this.scopeKey) || new Map();
+    const heightOf = (column) => column.reduce((sum, v) => sum + v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap, 0);
+    const tallest = Math.max(...columns.map(heightOf));
+    let x = 30;
+    for (const column of columns) {
+      let y = 40 + (tallest - heightOf(column)) / 2;
+      for (const v of column) {
+        v.pos = remembered.get(positionKey(v)) || [x, y];
+        y += v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap;
+        this.graph.add(v);
+      }
+      x += Math.max(...column.map((v) => v.size[0])) + columnGap;
+    }
+  }
+
+  // Literals are shown on their input's label, and references the canvas
+  // cannot draw (an unknown node or input) are kept as written.
+  wire(views, sources, outputs) {
+    const sourceOf = (value) => {
+      if (value.startsWith("$")) {
+        const slot = sources.findOutputSlot(value.slice(1));
+        return slot < 0 ? null : [sources, slot];
+      }
+      const reference = parseReference(value);
+      const source = views.get(reference.id);
+      if (!source?.outputs?.length) return null;
+      const slot = reference.output ? source.findOutputSlot(reference.output) : 0;
+      return slot < 0 ? null : [source, slot];
+    };
+    const wireInto = (target, values) => {
+      target.unresolved = {};
+      for (const [input, value] of Object.entries(values || {})) {
+        const slot = target.findInputSlot(input);
+        const source = typeof value === "string" ? sourceOf(value) : null;
+        if (typeof value !== "string") {
+          if (slot >= 0) target.inputs[slot].label += ` = ${literalText(value)}`;
+        } else if (source && slot >= 0) {
+          source[0].connect(source[1], target, slot);
+        } else {
+          target.unresolved[input] = value;
+        }
+      }
+    };
+    const body = scopeBody(this.state.doc, this.state.scope);
+    for (const node of body.nodes) wireInto(views.get(node.id), node.in);
+    wireInto(outputs, body.outputs);
+  }
+
+  // Zoom and scroll so that the whole scope is in sight, not magnified,
+  // and not so small that titles cannot be read.
+  fit() {
+    const nodes = this.graph._nodes;
+    if (nodes.length === 0) return;
+    const title = LiteGraph.NODE_TITLE_HEIGHT;
+    const x0 = Math.min(...nodes.map((v) => v.pos[0])), y0 = Math.min(...nodes.map((v) => v.pos[1] - title));
+    const x1 = Math.max(...nodes.map((v) => v.pos[0] + v.size[0])), y1 = Math.max(...nodes.map((v) => v.pos[1] + v.size[1]));
+    const ratio = window.devicePixelRatio || 1;
+    const width = this.element.width / ratio, height = this.element.height / ratio;
+    const scale = Math.max(0.5, Math.min(1, (width - 40) / (x1 - x0), (height - 40) / (y1 - y0)));
+    this.canvas.ds.scale = scale;
+    this.canvas.ds.offset = [Math.max(20 / scale, (width / scale - (x1 - x0)) / 2) - x0,
+                             Math.max(20 / scale, (height / scale - (y1 - y0)) / 2) - y0];
+    this.canvas.setDirty(true, true);
+  }
+
+  // A wire's value in the document.
+  static referenceTo(source, slot) {
+    if (source.boundary === "sources") return `$${source.outputs[slot].name}`;
+    return source.outputs.length > 1 ? `${source.shadetreeId}.${source.outputs[slot].name}` : source.shadetreeId;
+  }
+
+  // The values of a node's inputs (or of the outputs) as the canvas has
+  // them, in the file's order: wires where there are wires, literals and
+  // references the canvas could not draw where there are none.
+  valuesFromCanvas(target, values) {
+    const linked = new Map();
+    target.inputs.forEach((slot, index) => {
+      const link = target.getInputLink(index);
+      if (link) linked.set(slot.name, GraphView.referenceTo(this.graph.getNodeById(link.origin_id), link.origin_slot));
+    });
+    const result = {};
+    for (const [input, value] of Object.entries(values || {})) {
+      if (linked.has(input)) result[input] = linked.get(input);
+      else if (typeof value !== "string" || target.unresolved?.[input] === value) result[input] = value;
+    }
+    for (const [input, reference] of linked) result[input] ??= reference;
+    return result;
+  }
+
+  // A copy of state.doc with the shown scope's wires as the canvas has
+  // them. Nodes keep their place in the file and every field they had
+  // (attributes, docs); new nodes go last.
+  document() {
+    const doc = structuredClone(this.state.doc);
+    const body = scopeBody(doc, this.state.scope);
+    const views = new Map(this.opViews().map((v) => [v.shadetreeId, v]));
+    body.nodes = body.nodes.filter((node) => views.has(node.id));
+    for (const [id, v] of views) {
+      let node = body.nodes.find((n) => n.id === id);
+      if (!node) {
+        node = { id, op: v.op };
+        body.nodes.push(node);
+      }
+      const values = this.valuesFromCanvas(v, node.in);
+      if (Object.keys(values).length > 0) node.in = values;
+      else delete node.in;
+    }
+    const outputs = this.boundaryView("outputs");
+    if (outputs) body.outputs = this.valuesFromCanvas(outputs, body.outputs);
+    return doc;
+  }
+
+  // The checker's diagnostic on the node and input it names.
+  markError(diagnostic) {
+    for (const v of this.graph._nodes) {
+      const wrong = Boolean(diagnostic && v.shadetreeId && v.shadetreeId === diagnostic.node);
+      if (!v.boundary) {
+        v.color = wrong ? "#8a2c2c" : undefined;
+        v.bgcolor = wrong ? "#4a1f1f" : undefined;
+      }
+      for (const slot of v.inputs || []) {
+        const wrongInput = wrong && slot.name === diagnostic.input;
+        slot.color_on = wrongInput ? "#ff5555" : undefined;
+        slot.color_off = wrongInput ? "#ff5555" : undefined;
+        slot.label = slot.label.replace(/ ⚠$/, "") + (wrongInput ? " ⚠" : "");
+      }
+    }
+    this.canvas.setDirty(true, true);
+  }
+}
