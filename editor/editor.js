@@ -70,7 +70,8 @@ const snapshot = () => ({ text: JSON.stringify(graphView.document()), scope: sta
 function edited({ interactive = false } = {}) {
   if (!state.doc) return;
   history.touch(snapshot, { dragging: interactive });
-  scheduleUpdate({ interactive });
+  // Any edit of a volume is drawn coarse first and refined on a pause.
+  scheduleUpdate({ interactive: interactive || state.doc.kind === "volume" });
 }
 
 function restore(step) {
@@ -249,8 +250,9 @@ function scheduleUpdate({ interactive = false } = {}) {
   pending = setTimeout(update, 15);
 }
 
-// Volume previews are slow: while the user drags, or an animation plays,
-// they render at 1/2 or 1/4 of the size (1/4 when the full one is slow).
+// Volume previews are slow: just after an edit, or while an animation
+// plays, they render at 1/2 or 1/4 of the size (1/4 when the full one is
+// slow).
 function previewSide() {
   const coarse = state.doc.kind === "volume" &&
                  (state.playing || performance.now() - state.lastInteraction < refineDelayMs);
@@ -532,8 +534,8 @@ function showSaveAs(shown) {
   }
 }
 
-// Renders the document (as its file frames it, not as the preview is
-// navigated) at the size asked, and offers the image as a download.
+// Renders what the preview shows (its panned, zoomed or orbited view) at
+// the size asked, and offers the image as a download.
 async function exportImage() {
   const width = Number(byId("export-width").value), height = Number(byId("export-height").value);
   const format = byId("export-format").value;
@@ -543,7 +545,7 @@ async function exportImage() {
   }
   setStatus(`exporting ${width}x${height} ${format}…`, false);
   const response = await api("POST", `/api/export?${pathQuery()}width=${width}&height=${height}&frame=${state.frame}&format=${format}`,
-                             JSON.stringify(graphView.document(), null, 2));
+                             JSON.stringify(view.apply(graphView.document())));
   if (!response.ok) {
     setStatus(`export: ${await errorOf(response)}`, true);
     return null;
