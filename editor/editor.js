@@ -391,11 +391,14 @@ function thumbnailKey(doc, id, render) {
   const calls = [...upstream.values()].some((n) => doc.functions?.[n.op]);
   const params = [...dollars].map((name) => [name, doc.params?.[name]?.default]);
   const timed = usesTime([...upstream.values()], calls ? doc.functions : {});
-  return JSON.stringify([[...upstream.values()], calls ? doc.functions : null, params, timed ? state.frame : 0, doc.kind, render]);
+  // A function's node is shown at the function's first call in the main
+  // graph, so it depends on the whole main graph too.
+  const context = state.scope ? [doc.nodes, doc.params] : null;
+  return JSON.stringify([[...upstream.values()], calls ? doc.functions : null, params, timed ? state.frame : 0, doc.kind,
+                         render, context]);
 }
 
 function refreshThumbnails(doc, previewBody) {
-  if (state.scope) return;  // the server renders thumbnails of the main graph's nodes only
   // A volume graph's thumbnails are slices through its bounds: the camera
   // does not change them.
   const render = doc.kind === "volume" ? doc.render?.volume : JSON.parse(previewBody).render;
@@ -403,7 +406,8 @@ function refreshThumbnails(doc, previewBody) {
     cacheKey: thumbnailCacheKey(v.shadetreeId),
     key: thumbnailKey(doc, v.shadetreeId, render),
     url: `/api/preview?${pathQuery()}node=${encodeURIComponent(v.shadetreeId)}&width=${thumbnailSide}&height=${thumbnailSide}` +
-         `&frame=${state.frame}&slot=thumb-${encodeURIComponent(v.shadetreeId)}`,
+         `&frame=${state.frame}&slot=thumb-${encodeURIComponent(thumbnailCacheKey(v.shadetreeId))}` +
+         (state.scope ? `&function=${encodeURIComponent(state.scope)}` : ""),
     body: previewBody,
   }));
   thumbnails.refresh(jobs).catch((error) => setStatus(`thumbnails: ${error}`, true));

@@ -41,14 +41,14 @@ const literalText = (value) => (Array.isArray(value) ? `[${value.join(", ")}]` :
 const titleOf = (id, op) => (id === op ? id : `${id} (${op})`);
 const positionKey = (v) => v.shadetreeId ?? `#${v.boundary}`;
 
-// A node of the library or of a function of the document. In the main
-// graph it has room under its slots for a thumbnail of its output (the
-// server renders those for main-graph nodes only).
+// A node of the library or of a function of the document, with room under
+// its slots for a thumbnail of its output (in a function's body, as at the
+// function's first call).
 class ShadetreeNode extends LGraphNode {
   onConnectionsChange() { this.graph?.view.edited(); }
   onDrawBackground(ctx) {
     const view = this.graph?.view;
-    if (this.flags.collapsed || !this.shadetreeId || !view || view.state.scope) return;
+    if (this.flags.collapsed || !this.shadetreeId || !view) return;
     const entry = view.thumbnailOf(this.shadetreeId);
     const x = (this.size[0] - thumbnailSide) / 2, y = this.size[1] - thumbnailSide - 5;
     if (entry?.image) {
@@ -159,12 +159,12 @@ export class GraphView {
     return this.registerType(op, sourcesOf(this.state.doc, op), outputs, fn.doc || "", "functions");
   }
 
-  // Wide enough for the title, tall enough for a thumbnail in the main graph.
+  // Wide enough for the title, tall enough for a thumbnail.
   fitSize(v) {
     measure.font = this.canvas.title_text_font;
     const title = Math.ceil(measure.measureText(v.title).width) + 2 * LiteGraph.NODE_TITLE_HEIGHT + 4;
     const [width, height] = v.computeSize();
-    v.size = [Math.max(width, nodeWidth, title), height + (v.op && !this.state.scope ? thumbnailRoom : 0)];
+    v.size = [Math.max(width, nodeWidth, title), height + (v.op ? thumbnailRoom : 0)];
   }
 
   // A node made by the palette, litegraph's search or a paste gets a

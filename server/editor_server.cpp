@@ -309,7 +309,8 @@ void EditorServer::add_routes() {
     const auto start = std::chrono::steady_clock::now();
     std::string body = request.body;
     if (request.has_param("node")) {
-      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), files_);
+      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), files_,
+                                                   request.get_param_value("function"));
       if (!probe) return unprocessable(probe.error());
       body = std::move(*probe);
     }

@@ -27,7 +27,8 @@
 //                               headers X-Width, X-Height, X-Kernel (compiled | memory | disk),
 //                               X-Milliseconds (X-Compile-Milliseconds of them from the
 //                               graph's text to its machine code). node=ID (or ID.output): that node's value
-//                               instead of the outputs (server/node_probe.h), for thumbnails.
+//                               instead of the outputs (server/node_probe.h), for thumbnails; with
+//                               function=F, ID is a node of function F's body.
 //                               slot=S: a newer request of the same slot cancels this one,
 //                               which then answers 409 {"error": "superseded"}
 //   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr

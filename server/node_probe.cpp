@@ -25,20 +25,60 @@ std::vector<std::string> output_names(const CheckedGraph& checked, const Checked
   return names;
 }
 
-// A node id that no node of the graph has.
-std::string fresh_id(const Graph& graph, const std::string& base) {
-  for (int n = 0;; ++n) {
-    const std::string id = n == 0 ? base : base + std::to_string(n);
-    bool taken = false;
-    for (const Node& node : graph.nodes) taken |= node.id == id || node.id == id + "_xy";
-    if (!taken) return id;
-  }
+// A name that neither `taken` (an object's keys or a list of nodes' ids) has.
+std::string fresh_name(const json& taken, const std::string& base) {
+  auto has = [&](const std::string& name) {
+    if (taken.is_object()) return taken.contains(name);
+    for (const json& node : taken)
+      if (node.value("id", std::string()) == name || node.value("id", std::string()) == name + "_xy") return true;
+    return false;
+  };
+  std::string name = base;
+  for (int n = 1; has(name); ++n) name = base + std::to_string(n);
+  return name;
+}
+
+// The graph with a copy of `function` whose one output is its node
+// `node`, called where the main graph first calls `function`, and that
+// call's id.
+Result<std::pair<json, std::string>> call_of_function_node(const std::string& text, const std::string& file,
+                                                            const std::string& function, const std::string& node) {
+  json document = json::parse(text, nullptr, false);
+  if (!document.is_object() || !document.contains("functions") || !document["functions"].is_object() ||
+      !document["functions"].contains(function))
+    return invalid_input("no function \"" + function + "\" in " + file);
+  json probe = document["functions"][function];
+  const std::string id = node.substr(0, node.find('.'));
+  bool found = false;
+  for (const json& body_node : probe.value("nodes", json::array())) found |= body_node.value("id", std::string()) == id;
+  if (!found) return invalid_input("no node \"" + id + "\" in function \"" + function + "\"");
+  const json* call = nullptr;
+  if (document.contains("nodes") && document["nodes"].is_array())
+    for (const json& main_node : document["nodes"])
+      if (!call && main_node.value("op", std::string()) == function) call = &main_node;
+  if (!call)
+    return invalid_input("the main graph does not call function \"" + function + "\": its nodes have no value to show");
+  const std::string probe_function = fresh_name(document["functions"], function + "_probe");
+  probe["outputs"] = {{"value", node}};
+  const std::string probe_call = fresh_name(document["nodes"], "probe_call");
+  json call_node = {{"id", probe_call}, {"op", probe_function}};
+  if (call->contains("in")) call_node["in"] = (*call)["in"];
+  document["functions"][probe_function] = std::move(probe);
+  document["nodes"].push_back(std::move(call_node));
+  return std::pair{std::move(document), probe_call};
 }
 
 }  // namespace
 
 Result<std::string> node_probe_graph(const std::string& text, const std::string& file, const std::string& node,
-                                     const GraphFiles& files) {
+                                     const GraphFiles& files, const std::string& function) {
+  if (!function.empty()) {
+    // Parsed first: the file's structure is then known to be sound.
+    if (Result<Graph> parsed = parse_graph(text, file); !parsed) return parsed.error();
+    Result<std::pair<json, std::string>> called = call_of_function_node(text, file, function, node);
+    if (!called) return called.error();
+    return node_probe_graph(called->first.dump(), file, called->second, files);
+  }
   Result<Graph> parsed = parse_graph(text, file);
   if (!parsed) return parsed.error();
   auto graph = std::make_shared<const Graph>(std::move(*parsed));
@@ -78,7 +118,7 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
   nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
                              [&](const json& node) { return !upstream.contains(node.value("id", std::string())); }),
               nodes.end());
-  const std::string probe = fresh_id(*graph, "probe_output");
+  const std::string probe = fresh_name(document["nodes"], "probe_output");
   json colour = source;
   switch (type) {
     case Type::float_:

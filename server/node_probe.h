@@ -15,8 +15,10 @@
 namespace shadetree {
 
 // The probe graph's JSON text, for graph text `json` (named `file` in
-// messages) and `node`, a node id of the main graph or "id.output".
+// messages) and `node`, a node id of the main graph or "id.output". With
+// `function`, `node` is a node of that function's body, shown as it is
+// at the function's first call in the main graph.
 Result<std::string> node_probe_graph(const std::string& json, const std::string& file, const std::string& node,
-                                     const GraphFiles& files);
+                                     const GraphFiles& files, const std::string& function = "");
 
 }  // namespace shadetree

@@ -260,6 +260,30 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
     const unsigned char value = static_cast<unsigned char>(flag->body[i]);
     EXPECT_TRUE(value == 0 || value == 255) << "a bool is black or white";
   }
+  // A function's node, at the function's first call: d = u / 2.
+  const std::string function_graph = R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+    "functions": {"half": {"inputs": {"s": "float"}, "nodes": [{"id": "d", "op": "mul", "in": {"a": "$s", "b": 0.5}}],
+                           "outputs": {"v": "d"}}},
+    "nodes": [{"id": "t", "op": "uv"}, {"id": "parts", "op": "split", "in": {"v": "t"}},
+              {"id": "h", "op": "half", "in": {"s": "parts.x"}}],
+    "outputs": {"color": "h"}})";
+  auto inside = client_->Post("/api/preview?path=waves.json&width=4&height=1&function=half&node=d", headers_,
+                              function_graph, "application/json");
+  ASSERT_EQ(inside->status, 200) << inside->body;
+  EXPECT_EQ(static_cast<unsigned char>(inside->body[3 * 4]), static_cast<int>(0.4375f * 255 + 0.5f));
+  EXPECT_EQ(static_cast<unsigned char>(inside->body[3 * 4 + 2]), static_cast<int>(0.4375f * 255 + 0.5f))
+      << "a float is grey";
+  EXPECT_EQ(client_->Post("/api/preview?path=waves.json&function=half&node=d", headers_,
+                          R"({"format": "shadetree-graph", "version": 1, "nodes": [3]})", "application/json")
+                ->status,
+            422);
+  for (const char* query : {"function=half&node=nothing", "function=other&node=d"}) {
+    auto refused = client_->Post(std::string("/api/preview?path=waves.json&") + query, headers_, function_graph,
+                                 "application/json");
+    EXPECT_EQ(refused->status, 422) << query;
+    error_of(refused);
+  }
+
   auto absent = client_->Post("/api/preview?path=waves.json&node=nothing", headers_, uv_graph, "application/json");
   EXPECT_EQ(absent->status, 422);
   EXPECT_NE(error_of(absent).find("no node \"nothing\""), std::string::npos);
