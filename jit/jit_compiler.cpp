@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -155,12 +156,34 @@ class DiskObjectCache final : public llvm::ObjectCache {
     }
     std::filesystem::rename(temporary, target, error);
     if (error) std::filesystem::remove(temporary, error);
+    prune();
   }
   std::unique_ptr<llvm::MemoryBuffer> getObject(const llvm::Module*) override { return nullptr; }
-  void set_folder(std::filesystem::path folder) { folder_ = std::move(folder); }
+  void set_folder(std::filesystem::path folder, int limit) {
+    folder_ = std::move(folder);
+    limit_ = limit;
+  }
 
  private:
+  // Keeps the folder to limit_ kernel objects, removing the least recently
+  // used (written, or read: compile() touches what it reads) first: an
+  // editor session compiles a program per edit.
+  void prune() const {
+    std::error_code error;
+    std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> objects;
+    for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
+      const std::string name = entry.path().filename().string();
+      if (name.starts_with("shade_kernel_") && entry.path().extension() == ".o")
+        objects.emplace_back(entry.last_write_time(error), entry.path());
+    }
+    if (objects.size() <= static_cast<std::size_t>(std::max(limit_, 0))) return;
+    std::sort(objects.begin(), objects.end());
+    for (std::size_t i = 0; i + static_cast<std::size_t>(std::max(limit_, 0)) < objects.size(); ++i)
+      std::filesystem::remove(objects[i].second, error);
+  }
+
   std::filesystem::path folder_;
+  int limit_ = 0;
 };
 
 // One LLJIT for the process. Never destroyed: kernels may outlive every
@@ -185,7 +208,7 @@ class Jit {
     };
     if (settings.cold) {
       name += "_cold" + std::to_string(++cold_compiles_);
-      object_cache_->set_folder({});
+      object_cache_->set_folder({}, 0);
       Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
@@ -196,12 +219,17 @@ class Jit {
         return compiled(code, CacheHit::memory, elapsed());
       }
     const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
-    object_cache_->set_folder(folder);
+    object_cache_->set_folder(folder, settings.disk_cache_objects);
     if (!folder.empty()) {
-      auto object = llvm::MemoryBuffer::getFile((folder / (name + ".o")).string());
+      const std::filesystem::path file = folder / (name + ".o");
+      auto object = llvm::MemoryBuffer::getFile(file.string());
       if (object) {
         Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
-        if (code) return admit(*code, CacheHit::disk, elapsed(), evicted);
+        if (code) {
+          std::error_code ignored;  // recently used: the last to be pruned
+          std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
+          return admit(*code, CacheHit::disk, elapsed(), evicted);
+        }
       }
     }
     Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);

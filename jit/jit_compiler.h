@@ -5,7 +5,8 @@
 // Each kernel's code has an ORC ResourceTracker of its own and is removed
 // from the JIT once neither the cache nor any Kernel holds it.
 // On disk (a user cache folder), each kernel's object file is kept so that
-// a second run of the same graph skips compilation altogether.
+// a second run of the same graph skips compilation altogether; the folder
+// is bounded too, the least recently used objects going first.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +52,7 @@ struct JitSettings {
   std::string cache_folder;  // empty: $SHADETREE_CACHE_DIR, else $XDG_CACHE_HOME/shadetree, else ~/.cache/shadetree
   bool cold = false;         // bypass both caches and compile anew (for measurements)
   std::optional<GatherStrategy> gathers;  // empty: the host's best (docs/architecture.md)
+  int disk_cache_objects = 4096;  // the folder keeps this many kernels, the most recently used
 };
 
 // The table lookup strategy used when JitSettings::gathers is empty.

@@ -213,5 +213,20 @@ TEST(JitCompiler, TheMemoryCacheIsBoundedAndKernelsInUseOutliveIt) {
   EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(held_graph->ir, *recompiled)), 0.25f);
 }
 
+TEST(JitCompiler, TheDiskCacheKeepsTheMostRecentlyUsedObjects) {
+  const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-disk-cache-bound-test";
+  std::filesystem::remove_all(folder);
+  JitSettings settings{true, folder.string(), false, std::nullopt, 3};
+  for (int i = 0; i < 5; ++i) {
+    Result<LoadedGraph> graph = constant_graph(200.0f + static_cast<float>(i));
+    ASSERT_TRUE(graph.ok());
+    ASSERT_TRUE(compile_kernel(graph->ir, 4, settings).ok());
+  }
+  std::size_t objects = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) objects += entry.path().extension() == ".o";
+  EXPECT_EQ(objects, 3u);
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace shadetree
