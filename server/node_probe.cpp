@@ -5,14 +5,12 @@
 #include <set>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "graph/json_reader.h"  // json: objects in file order, as a function's outputs must be
 #include "graph/parse.h"
+#include "graph/parse_volume.h"
 
 namespace shadetree {
 namespace {
-
-using nlohmann::json;
 
 // The output names of a checked node, for its op or its function.
 std::vector<std::string> output_names(const CheckedGraph& checked, const CheckedNode& node) {
@@ -142,6 +140,14 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
   document["outputs"] = {{"color", colour}};
   if (graph->kind == GraphKind::volume && graph->render.volume) {
     const VolumeDesc& volume = *graph->render.volume;
+    // What only a march provides, as it is on the slice: the march step,
+    // the view straight into it and no incoming density.
+    for (json& node : nodes) {
+      const std::string op = node.value("op", std::string());
+      if (op == "step_size") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", march_step(volume)}, {"b", 0}}}};
+      if (op == "density") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", 0}, {"b", 0}}}};
+      if (op == "I") node = {{"id", node["id"]}, {"op", "vec3"}, {"in", {{"x", 0}, {"y", 0}, {"z", -1}}}};
+    }
     json& render = document["render"];
     render.erase("scene");
     render.erase("volume");

@@ -3,8 +3,9 @@
 // show the value as their colour (a float as grey, a vec2 as red and
 // green, a vec3 as its three components, a bool as white where true);
 // a volume graph shows it as a texture over the slice through the middle
-// of its bounds, so a thumbnail needs no ray march. Only the node and the
-// nodes it reads are kept.
+// of its bounds, so a thumbnail needs no ray march (step_size is the march
+// step there, I looks into the slice, the incoming density is 0). Only the
+// node and the nodes it reads are kept.
 #pragma once
 
 #include <string>

@@ -273,6 +273,18 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
   EXPECT_EQ(static_cast<unsigned char>(inside->body[3 * 4]), static_cast<int>(0.4375f * 255 + 0.5f));
   EXPECT_EQ(static_cast<unsigned char>(inside->body[3 * 4 + 2]), static_cast<int>(0.4375f * 255 + 0.5f))
       << "a float is grey";
+  // A call's first output is the function's first in the file, not in
+  // alphabetical order.
+  const std::string two_outputs = R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+    "functions": {"two": {"inputs": {"s": "float"}, "nodes": [{"id": "d", "op": "mul", "in": {"a": "$s", "b": 0.5}}],
+                          "outputs": {"z": "d", "a": "$s"}}},
+    "nodes": [{"id": "t", "op": "uv"}, {"id": "parts", "op": "split", "in": {"v": "t"}},
+              {"id": "h", "op": "two", "in": {"s": "parts.x"}}],
+    "outputs": {"color": "h"}})";
+  auto first = client_->Post("/api/preview?path=waves.json&width=4&height=1&node=h", headers_, two_outputs,
+                             "application/json");
+  ASSERT_EQ(first->status, 200) << first->body;
+  EXPECT_EQ(static_cast<unsigned char>(first->body[3 * 4]), static_cast<int>(0.4375f * 255 + 0.5f));
   EXPECT_EQ(client_->Post("/api/preview?path=waves.json&function=half&node=d", headers_,
                           R"({"format": "shadetree-graph", "version": 1, "nodes": [3]})", "application/json")
                 ->status,
@@ -293,18 +305,22 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
 
   // A volume graph's node, on the slice through the middle of its bounds:
   // P.x runs over the bounds' x. The nodes it does not read may use what
-  // only volumes have (step_size).
+  // only volumes have; step_size is the march step.
   const std::string volume_graph = R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
     "nodes": [{"id": "p", "op": "P"}, {"id": "parts", "op": "split", "in": {"v": "p"}},
               {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 1}}, {"id": "step", "op": "step_size"},
               {"id": "per_step", "op": "mul", "in": {"a": "d", "b": "step"}}],
     "outputs": {"density": "per_step"},
-    "render": {"volume": {"bounds": {"min": [0, 0, -1], "max": [1, 1, 1]}}}})";
+    "render": {"volume": {"bounds": {"min": [0, 0, -1], "max": [1, 1, 1]}, "step": 0.5}}})";
   auto slice = client_->Post("/api/preview?path=waves.json&width=2&height=1&node=parts.x", headers_, volume_graph,
                              "application/json");
   ASSERT_EQ(slice->status, 200) << slice->body;
   EXPECT_EQ(static_cast<unsigned char>(slice->body[0]), static_cast<int>(0.25f * 255 + 0.5f));
   EXPECT_EQ(static_cast<unsigned char>(slice->body[4]), static_cast<int>(0.75f * 255 + 0.5f));
+  auto step = client_->Post("/api/preview?path=waves.json&width=2&height=1&node=step", headers_, volume_graph,
+                            "application/json");
+  ASSERT_EQ(step->status, 200) << step->body;
+  EXPECT_EQ(static_cast<unsigned char>(step->body[0]), static_cast<int>(0.5f * 255 + 0.5f)) << "the march step";
 }
 
 TEST_F(EditorServerTest, ExportsImageFilesAndSaveAsKeepsExistingFiles) {
