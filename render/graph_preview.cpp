@@ -1,5 +1,6 @@
 #include "render/graph_preview.h"
 
+#include "graph/parse_volume.h"
 #include "render/camera.h"
 #include "render/preview_scene.h"
 #include "render/scene.h"
@@ -29,6 +30,7 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
     VolumeView view{request.width, request.height, request.frame};
     VolumeRenderOptions options;
     options.threads = request.threads;
+    if (request.draft) options.step = draft_step_factor * march_step(*graph.render.volume);
     options.cancel = request.cancel;
     return render_volume(kernel, loaded.params, *scene, *graph.render.volume,
                          Camera(scene->desc().camera, request.width, request.height), view, options);

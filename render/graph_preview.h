@@ -13,11 +13,16 @@
 
 namespace shadetree {
 
+// A draft volume preview's step, in units of the volume's march step. Its
+// density stays as it is: opacity is defined per reference step.
+inline constexpr float draft_step_factor = 4.0f;
+
 struct PreviewRequest {
   int width = 256;
   int height = 256;
   float frame = 0.0f;
   int threads = 0;  // 0: all cores
+  bool draft = false;  // volumes march at draft_step_factor x their step (the editor's previews while editing)
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (render/image_tiles.h)
 };
 

@@ -299,6 +299,7 @@ void EditorServer::add_routes() {
     Result<int> frame = integer_parameter(request, "frame", 0, 0, 1000000);
     if (!frame) return send_error(response, 400, frame.error().message), std::nullopt;
     preview.frame = static_cast<float>(*frame);
+    preview.draft = request.get_param_value("draft") == "1";
     const std::string slot = request.get_param_value("slot");
     if (slot.size() > 100) return send_error(response, 400, "slot names are at most 100 characters"), std::nullopt;
     auto unprocessable = [&](const Diagnostic& diagnostic) {

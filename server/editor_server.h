@@ -30,7 +30,8 @@
 //                               instead of the outputs (server/node_probe.h), for thumbnails; with
 //                               function=F, ID is a node of function F's body.
 //                               slot=S: a newer request of the same slot cancels this one,
-//                               which then answers 409 {"error": "superseded"}
+//                               which then answers 409 {"error": "superseded"}. draft=1: a
+//                               volume marches at a coarser step (render/graph_preview.h)
 //   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr
 //                               the body rendered as an image file (up to max_export_side)
 //   GET  /api/stats             {"compiles": kernels compiled since start, "previews": N,

@@ -323,6 +323,24 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
   EXPECT_EQ(static_cast<unsigned char>(step->body[0]), static_cast<int>(0.5f * 255 + 0.5f)) << "the march step";
 }
 
+TEST_F(EditorServerTest, DraftVolumePreviewsMarchCoarserToNearlyThePicture) {
+  const std::string cloud = R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
+    "nodes": [{"id": "p", "op": "P"}, {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 0.8, "softness": 0.6}}],
+    "outputs": {"density": "d", "color": [1, 0.9, 0.8]},
+    "render": {"volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}}}})";
+  auto full = client_->Post("/api/preview?path=waves.json&width=32&height=32", headers_, cloud, "application/json");
+  auto draft = client_->Post("/api/preview?path=waves.json&width=32&height=32&draft=1", headers_, cloud,
+                             "application/json");
+  ASSERT_EQ(full->status, 200) << full->body;
+  ASSERT_EQ(draft->status, 200) << draft->body;
+  ASSERT_EQ(full->body.size(), draft->body.size());
+  EXPECT_NE(full->body, draft->body) << "a coarser march";
+  double difference = 0;
+  for (std::size_t i = 0; i < full->body.size(); ++i)
+    difference += std::abs(static_cast<unsigned char>(full->body[i]) - static_cast<unsigned char>(draft->body[i]));
+  EXPECT_LT(difference / static_cast<double>(full->body.size()), 4.0) << "of nearly the same picture (mean, of 255)";
+}
+
 TEST_F(EditorServerTest, ExportsImageFilesAndSaveAsKeepsExistingFiles) {
   auto png = client_->Post("/api/export?path=waves.json&width=40&height=30&format=png", headers_, sines_graph,
                            "application/json");
