@@ -111,7 +111,7 @@ class CurveEditor {
     [this.canvas, this.context] = sizedCanvas(width, height);
     this.canvas.className = "curve";
     this.canvas.title = "drag a point to change its value (shift: all channels), double-click to add one, right-click to delete one";
-    this.canvas.curveEditor = this;  // for tests: pointOf()
+    this.canvas.curveEditor = this;  // for tests: pointOf(), valueAt()
     this.swatches = element("div", { className: "swatches" });
     this.fields = element("div", { className: "knot-fields" });
     this.element = element("div", { className: "curve-editor" }, [this.canvas, this.swatches, this.fields]);
@@ -146,6 +146,9 @@ class CurveEditor {
     const top = this.plotTop + pad.top, bottom = this.plotTop + plotHeight - pad.bottom;
     return lo + ((bottom - py) / (bottom - top)) * (hi - lo);
   }
+
+  // The curve drawn, at x in [0,1]: one value per component.
+  valueAt(x) { return this.model.at(this.node, this.rows, x); }
 
   // Where control point (index, component) is drawn, in CSS pixels of the canvas.
   pointOf(index, component = 0) {
@@ -210,7 +213,7 @@ class CurveEditor {
   // A new knot at x, on the curve as it is, so that the shape barely changes.
   insertAt(x) {
     const n = this.count;
-    const value = this.model.at(this.node, this.rows, x).map(tidy);
+    const value = this.valueAt(x).map(tidy);
     let index = 0;
     while (index < n && this.model.xOf(this.node, index, n) <= x) index += 1;
     if (this.node.op === "spline" && this.model.basis(this.node) === "catmull-rom") index = clamp(index, 1, n - 1);
@@ -246,7 +249,7 @@ class CurveEditor {
     g.fillRect(0, this.plotTop, width, plotHeight);
     if (this.colour) {
       for (let px = pad.left; px < width - pad.right; ++px) {
-        g.fillStyle = hexOf(this.model.at(this.node, this.rows, clamp(this.pixelToX(px + 0.5), 0, 1)));
+        g.fillStyle = hexOf(this.valueAt(clamp(this.pixelToX(px + 0.5), 0, 1)));
         g.fillRect(px, 0, 1, stripHeight);
       }
     }
@@ -277,7 +280,7 @@ class CurveEditor {
       g.lineWidth = 1.5;
       g.beginPath();
       for (let px = this.xToPixel(0); px <= this.xToPixel(1); px += 1) {
-        const y = this.valueToPixel(this.model.at(this.node, this.rows, clamp(this.pixelToX(px), 0, 1))[component]);
+        const y = this.valueToPixel(this.valueAt(clamp(this.pixelToX(px), 0, 1))[component]);
         if (px === this.xToPixel(0)) g.moveTo(px, y);
         else g.lineTo(px, y);
       }

@@ -2,12 +2,14 @@
 // node canvas (@comfyorg/litegraph) is a view of the nodes and wires of
 // one scope of it, the main graph or one function, and every edit writes
 // back into the document, which the server checks and renders
-// (server/editor_server.h). Params are sliders that change only the
-// document's param values, so a drag re-renders without recompiling.
+// (server/editor_server.h). The params panel edits the document's params:
+// a change of a value or range reaches only the uniform block, so a
+// slider drag re-renders without recompiling.
 import { api, errorOf, imageOf } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
 import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
 import { History } from "./history.js";
+import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
 
@@ -40,6 +42,7 @@ const pathQuery = () => (state.path ? `path=${encodeURIComponent(state.path)}&` 
 const graphView = new GraphView(byId("graph-canvas"), {
   state,
   onEdit: () => edited(),
+  onMove: () => history.touch(snapshot),
   thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
 });
 const { graph, canvas } = graphView;
@@ -48,6 +51,12 @@ const previewCanvas = document.getElementById("preview");
 const view = new PreviewView(previewCanvas, { documentOf: () => state.doc, onChange: (interactive) => scheduleUpdate({ interactive }) });
 const history = new History({ onChange: showHistoryState });
 const thumbnails = new Thumbnails({ onDrawn: () => canvas.setDirty(true, false) });
+const paramsPanel = new ParamsPanel(byId("params"), {
+  state,
+  documentOf: () => graphView.document(),
+  onEdit: (interactive) => edited({ interactive }),
+  onRestructure: restructureParams,
+});
 
 function setStatus(text, isError) {
   status.textContent = text;
@@ -62,7 +71,9 @@ function functionSignature(doc, name) {
 
 // --- edits and history ---
 
-const snapshot = () => ({ text: JSON.stringify(graphView.document()), scope: state.scope });
+// The document, and where its nodes are on the canvas: a move is a step
+// too, though places are not part of the file.
+const snapshot = () => ({ text: JSON.stringify(graphView.document()), layout: graphView.layout(), scope: state.scope });
 
 // Every change of the document: into the history and the preview.
 // interactive: part of a drag (or of typing), whose edits make one step
@@ -77,12 +88,13 @@ function edited({ interactive = false } = {}) {
 function restore(step) {
   if (!step) return;
   graphView.rememberPositions();
+  graphView.restoreLayout(step.snapshot.layout);
   const selected = graphView.selectedId();
   state.doc = JSON.parse(step.snapshot.text);
   state.scope = step.scope && state.doc.functions?.[step.scope] ? step.scope : null;
   showScopes();
   graphView.show();
-  showParams();
+  paramsPanel.show();
   showFrameControls();
   const v = selected && graphView.viewOf(selected);
   if (v) canvas.selectNode(v);
@@ -102,46 +114,18 @@ function showHistoryState() {
   byId("save").textContent = unsaved() ? "Save •" : "Save";
 }
 
-// --- params as sliders ---
+// --- params ---
 
-function showParams() {
-  const panel = byId("params");
-  panel.replaceChildren();
-  for (const [name, param] of Object.entries(state.doc.params || {})) {
-    const label = document.createElement("label");
-    label.textContent = name + (param.doc ? ` — ${param.doc}` : "");
-    panel.append(label);
-    if (param.type === "float" || param.type === "int") {
-      const slider = document.createElement("input");
-      slider.type = "range";
-      slider.name = name;
-      slider.min = param.min ?? 0;
-      slider.max = param.max ?? Math.max(1, Number(param.default) * 4);
-      slider.step = param.type === "int" ? 1 : (slider.max - slider.min) / 1000;
-      slider.value = param.default;
-      const value = document.createElement("span");
-      value.textContent = ` ${param.default}`;
-      slider.addEventListener("input", () => {
-        param.default = param.type === "int" ? Math.round(Number(slider.value)) : Number(slider.value);
-        value.textContent = ` ${param.default}`;
-        edited({ interactive: true });
-      });
-      slider.addEventListener("change", () => edited());
-      panel.append(slider, value);
-    } else if (param.type === "color") {
-      const picker = document.createElement("input");
-      picker.type = "color";
-      picker.name = name;
-      const hex = (v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, "0");
-      picker.value = "#" + param.default.map(hex).join("");
-      picker.addEventListener("input", () => {
-        param.default = [1, 3, 5].map((i) => parseInt(picker.value.slice(i, i + 2), 16) / 255);
-        edited({ interactive: true });
-      });
-      picker.addEventListener("change", () => edited());
-      panel.append(picker);
-    }
-  }
+// Adding, renaming or deleting a param changes the main graph's sources
+// (and a rename its references): the canvas's wires are read back into
+// the document first, and the canvas is built again from it.
+function restructureParams(change) {
+  graphView.rememberPositions();
+  state.doc = graphView.document();
+  change(state.doc);
+  if (!state.scope) graphView.show();
+  paramsPanel.show();
+  edited();
 }
 
 // --- the selected node: its doc and attribute editors ---
@@ -252,7 +236,7 @@ function scheduleUpdate({ interactive = false } = {}) {
 
 // Volume previews are slow: just after an edit, or while an animation
 // plays, they render at 1/2 or 1/4 of the size (1/4 when the full one is
-// slow).
+// slow), as drafts marched at a coarser step (server/editor_server.h).
 function previewSide() {
   const coarse = state.doc.kind === "volume" &&
                  (state.playing || performance.now() - state.lastInteraction < refineDelayMs);
@@ -322,7 +306,8 @@ async function requestPreview(body, side, key) {
   inflight = { controller, started: performance.now(), done: new Promise((resolve) => { finished = resolve; }) };
   const started = inflight.started;
   try {
-    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main`,
+    const draft = side < previewSize ? "&draft=1" : "";
+    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main${draft}`,
                                body, controller.signal);
     if (response.status === 409) return false;
     if (!response.ok) {
@@ -481,7 +466,7 @@ async function open(path) {
   byId("graph-list").value = path;
   showScopes();
   graphView.show({ fit: true });
-  showParams();
+  paramsPanel.show();
   showFrameControls();
   showNodePanel(null);
   const opened = snapshot();
@@ -571,7 +556,7 @@ async function exportImage() {
 // Undo and redo everywhere but in text fields, which have their own.
 function onKey(event) {
   const control = event.ctrlKey || event.metaKey;
-  if (!control || event.target.matches("textarea, input:not([type=range]):not([type=color]):not([type=button])")) return;
+  if (!control || event.target.matches("textarea, input:not([type=range]):not([type=color]):not([type=checkbox]):not([type=button])")) return;
   const key = event.key.toLowerCase();
   if (key === "z" && !event.shiftKey) undo();
   else if ((key === "z" && event.shiftKey) || key === "y") redo();

@@ -89,8 +89,9 @@ const measure = document.createElement("canvas").getContext("2d");
 export class GraphView {
   // state: the editor's {library, doc, scope, lastError}, read here (and
   // new nodes added to state.doc); onEdit(): the user changed the scope's
-  // nodes or wires; thumbnailOf(id): the thumbnail entry of a node, or null.
-  constructor(canvasElement, { state, onEdit, thumbnailOf }) {
+  // nodes or wires; onMove(): the user dragged nodes to new places;
+  // thumbnailOf(id): the thumbnail entry of a node, or null.
+  constructor(canvasElement, { state, onEdit, onMove, thumbnailOf }) {
     this.state = state;
     this.onEdit = onEdit;
     this.thumbnailOf = thumbnailOf;
@@ -112,6 +113,7 @@ export class GraphView {
       this.edited();
     };
     this.graph.onNodeRemoved = () => this.edited();
+    this.canvas.onNodeMoved = () => onMove();
   }
 
   edited() {
@@ -198,6 +200,17 @@ export class GraphView {
 
   rememberPositions() {
     this.positions.set(this.scopeKey, new Map(this.graph._nodes.map((v) => [positionKey(v), [...v.pos]])));
+  }
+
+  // The places of the nodes of every scope shown so far, as text (for the
+  // history), and back: the scopes it has replace the remembered ones.
+  layout() {
+    this.rememberPositions();
+    return JSON.stringify([...this.positions].map(([scope, places]) => [scope, [...places]]));
+  }
+
+  restoreLayout(text) {
+    for (const [scope, places] of JSON.parse(text)) this.positions.set(scope, new Map(places));
   }
 
   // Rebuilds the canvas from state.doc's scope state.scope; nodes keep the

@@ -1,8 +1,9 @@
-// Undo and redo over snapshots of the document. A burst of edits becomes
-// one step: a snapshot is taken only once the edits have been quiet for a
+// Undo and redo over snapshots of the document and of its nodes' places
+// on the canvas ({text, layout, scope}). A burst of edits becomes one
+// step: a snapshot is taken only once the edits have been quiet for a
 // moment (a slider or control-point drag), or at the end of the current
-// task (a wire replaced: one removed, one added), or when undo/redo needs
-// it now.
+// task (a wire replaced: one removed, one added; a node moved), or when
+// undo/redo needs it now.
 export class History {
   constructor({ limit = 200, quietMs = 400, onChange = () => {} } = {}) {
     this.limit = limit;
@@ -13,7 +14,7 @@ export class History {
     this.take = null;
   }
 
-  // A new document: its only step is `snapshot` ({text, scope}).
+  // A new document: its only step is `snapshot`.
   reset(snapshot) {
     clearTimeout(this.timer);
     this.take = null;
@@ -39,7 +40,8 @@ export class History {
 
   // Edits that end where they started (a drag and back) are no step.
   record(snapshot) {
-    if (this.index >= 0 && this.steps[this.index].text === snapshot.text) return;
+    const last = this.steps[this.index];
+    if (last && last.text === snapshot.text && last.layout === snapshot.layout) return;
     this.steps.splice(this.index + 1);
     this.steps.push(snapshot);
     if (this.steps.length > this.limit) this.steps.shift();

@@ -7,10 +7,14 @@
 // body, drag a control point of its spline with the mouse and see the
 // preview change, undo and redo it; export a PNG; save as a new file, and
 // check it. With a third argument, the screenshot of the editor with the
-// graph opened and its thumbnails drawn (docs/editor.png).
+// graph opened and its thumbnails drawn (docs/editor.png). Also: drag a
+// node and undo the move; in the params panel, change a range (no
+// compile), rename a param, add one and delete it, and see a delete of a
+// param in use refused; and the curve the curve editor draws agrees with
+// the server's spline, Catmull-Rom and linear.
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
-import { copyFileSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import assert from "node:assert/strict";
@@ -32,7 +36,9 @@ const url = await new Promise((resolve, reject) => {
   server.on("exit", (code) => reject(new Error(`shadetree serve exited with ${code}`)));
 });
 const origin = new URL(url);
-const stats = async () => (await fetch(`${origin.origin}/api/stats`, { headers: { "X-Shadetree-Token": origin.searchParams.get("token") } })).json();
+const request = (path, options = {}) =>
+  fetch(`${origin.origin}${path}`, { ...options, headers: { "X-Shadetree-Token": origin.searchParams.get("token") } });
+const stats = async () => (await request("/api/stats")).json();
 
 const browser = await puppeteer.launch({
   executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
@@ -57,6 +63,26 @@ try {
     };
   });
   const previewPixels = () => page.evaluate(() => window.previewChecksum());
+  // Litegraph finds the node under the pointer by the bounds it computes
+  // when it draws a frame.
+  const drawn = () => page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  // A point of node `id`'s title bar, in page pixels.
+  const titlePoint = async (id) => {
+    await drawn();
+    return page.evaluate((id) => {
+      const { canvas, viewOf } = window.shadetreeEditor;
+      const view = viewOf(id);
+      const [x, y] = canvas.ds.convertOffsetToCanvas([view.pos[0] + 40, view.pos[1] - 15]);
+      const box = canvas.canvas.getBoundingClientRect();
+      return [box.left + x, box.top + y];
+    }, id);
+  };
+  const pressKeys = async (...keys) => {
+    for (const key of keys) await page.keyboard.down(key);
+    for (const key of keys.reverse()) await page.keyboard.up(key);
+  };
+  const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
+  const paramsOf = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params);
   const before = await previewPixels();
   assert.equal(await page.evaluate(() => window.shadetreeEditor.graph._nodes.length > 5), true, "the graph's nodes are on the canvas");
   console.log("opened marble.json: preview drawn");
@@ -85,6 +111,74 @@ try {
   assert.notEqual(await previewPixels(), before, "the preview changed");
   assert.equal((await stats()).compiles, compilesBefore, "a param drag never recompiles");
   console.log("dragged the scale slider: preview changed, no compile");
+
+  // Drag node turb by its title: the move is a step of the history.
+  await settled();
+  const positionOf = (id) => page.evaluate((id) => [...window.shadetreeEditor.viewOf(id).pos], id);
+  const turbBefore = await positionOf("turb");
+  const stepBefore = await page.evaluate(() => window.shadetreeEditor.history.index);
+  const grip = await titlePoint("turb");
+  await page.mouse.move(grip[0], grip[1]);
+  await page.mouse.down();
+  for (let step = 1; step <= 6; ++step) await page.mouse.move(grip[0] + step * 10, grip[1] + step * 6);
+  await page.mouse.up();
+  await page.waitForFunction((n) => window.shadetreeEditor.history.index > n, { timeout: 5000 }, stepBefore);
+  const turbMoved = await positionOf("turb");
+  assert.notDeepEqual(turbMoved, turbBefore, "the drag moved turb");
+  await pressKeys("Control", "z");
+  assert.deepEqual(await positionOf("turb"), turbBefore, "undo puts turb back");
+  await pressKeys("Control", "Shift", "z");
+  assert.deepEqual(await positionOf("turb"), turbMoved, "redo moves it again");
+  console.log(`dragged turb from ${turbBefore.map(Math.round)} to ${turbMoved.map(Math.round)}: undo put it back, redo moved it again`);
+
+  // A new max for turbulence_amount in the params panel: its slider's
+  // range changes, and only the uniform block (no compile).
+  const compilesBeforeMax = (await stats()).compiles;
+  const previewsBeforeMax = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  await page.click('button[title="edit param turbulence_amount"]');
+  await page.click('input[name="turbulence_amount.max"]', { clickCount: 3 });
+  await page.keyboard.type("50");
+  await page.keyboard.press("Tab");
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeMax);
+  assert.equal(await page.$eval('input[name="turbulence_amount"]', (slider) => slider.max), "50");
+  assert.equal((await paramsOf()).turbulence_amount.max, 50);
+  assert.equal((await stats()).compiles, compilesBeforeMax, "a new max never recompiles");
+  console.log("set turbulence_amount's max to 50 in the panel: the slider's max changed, no compile");
+
+  // Rename it: the main graph's reference follows.
+  await page.click('input[name="turbulence_amount.name"]', { clickCount: 3 });
+  await page.keyboard.type("stir");
+  await page.keyboard.press("Tab");
+  await page.waitForSelector('input[name="stir"]', { timeout: 5000 });
+  const renamed = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas());
+  assert.deepEqual(Object.keys(renamed.params), ["scale", "stir", "octaves"], "the renamed param keeps its place");
+  assert.equal(renamed.nodes.find((n) => n.id === "stirred").in.b, "$stir");
+  await page.waitForFunction(() => document.getElementById("status").textContent.endsWith(": ok"), { timeout: 10000 });
+  console.log("renamed turbulence_amount to stir: stirred.b reads $stir, the graph checks");
+
+  // Add a param, delete it, and undo the delete; a param in use is not deleted.
+  await page.type('input[name="new-param-name"]', "gain");
+  await page.select('select[name="new-param-type"]', "float");
+  await page.click(".param-adder button");
+  await page.waitForSelector('input[name="gain"]', { timeout: 5000 });
+  assert.deepEqual((await paramsOf()).gain, { type: "float", default: 0.5, min: 0, max: 1 });
+  assert.ok(await page.evaluate(() => window.shadetreeEditor.graphView.boundaryView("sources").findOutputSlot("gain") >= 0),
+            "the canvas's params node has gain");
+  await settled();
+  await page.click('button[title="edit param gain"]');
+  await page.click('button[title="delete param gain"]');
+  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 5000 });
+  assert.equal((await paramsOf()).gain, undefined);
+  await pressKeys("Control", "z");
+  await page.waitForSelector('input[name="gain"]', { timeout: 5000 });
+  await pressKeys("Control", "Shift", "z");
+  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 5000 });
+  await page.click('button[title="edit param scale"]');
+  await page.click('button[title="delete param scale"]');
+  const refusal = await page.$eval('input[name="scale.name"]', (field) => field.closest(".param").querySelector(".param-message").textContent);
+  assert.match(refusal, /used by layer_x/);
+  assert.ok((await paramsOf()).scale, "scale is kept");
+  console.log(`added param gain, deleted it, undid and redid the delete; deleting scale: ${refusal}`);
 
   // Add a noise node and wire it into the stirring: mul.a = noise.
   await page.select("#palette", "noise");
@@ -126,16 +220,7 @@ try {
   // spline node, and drag a control point up in the side panel's curve.
   await page.select("#scope", "marble_color");
   await page.waitForFunction(() => window.shadetreeEditor.viewOf("ramp"));
-  // Litegraph finds the node under the pointer by the bounds it computes
-  // when it draws a frame.
-  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
-  const title = await page.evaluate(() => {
-    const { canvas, viewOf } = window.shadetreeEditor;
-    const view = viewOf("ramp");
-    const [x, y] = canvas.ds.convertOffsetToCanvas([view.pos[0] + 40, view.pos[1] - 15]);
-    const box = canvas.canvas.getBoundingClientRect();
-    return [box.left + x, box.top + y];
-  });
+  const title = await titlePoint("ramp");
   await page.mouse.click(title[0], title[1]);
   await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
   const knotsBefore = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
@@ -208,6 +293,42 @@ try {
   const variantDoc = JSON.parse(readFileSync(join(folder, "marble_variant.json"), "utf8"));
   assert.equal(JSON.stringify(variantDoc.functions.marble_color.nodes.find((n) => n.id === "ramp").knots), knotsDragged);
   console.log("saved as marble_variant.json: shadetree check accepts it, with the dragged knot");
+
+  // The curve editor draws the spline the server renders: uv.x through
+  // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
+  const probe = {
+    format: "shadetree-graph", version: 1, name: "spline_probe", kind: "texture",
+    nodes: [
+      { id: "st", op: "uv" },
+      { id: "coords", op: "split", in: { v: "st" } },
+      { id: "curve", op: "spline", in: { x: "coords.x" }, basis: "catmull-rom",
+        knots: [[0.3, 0.8, 0.5], [0.2, 0.6, 0.4], [0.7, 0.3, 0.9], [0.4, 0.9, 0.1], [0.8, 0.2, 0.6], [0.5, 0.5, 0.3]] },
+    ],
+    outputs: { color: "curve" },
+  };
+  writeFileSync(join(folder, "spline_probe.json"), JSON.stringify(probe, null, 2));
+  await page.evaluate(() => window.shadetreeEditor.open("spline_probe.json"));
+  const curveTitle = await titlePoint("curve");
+  await page.mouse.click(curveTitle[0], curveTitle[1]);
+  await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
+  for (const basis of ["catmull-rom", "linear"]) {
+    await page.select(".curve-editor select", basis);
+    const { drawn, doc } = await page.evaluate(() => {
+      const editor = document.querySelector(".curve-editor canvas").curveEditor;
+      const xs = Array.from({ length: 16 }, (_, i) => (i + 0.5) / 16);
+      return { drawn: xs.map((x) => editor.valueAt(x)), doc: window.shadetreeEditor.documentFromCanvas() };
+    });
+    assert.equal(doc.nodes.find((n) => n.id === "curve").basis, basis);
+    const response = await request("/api/preview?path=spline_probe.json&width=16&height=1", { method: "POST", body: JSON.stringify(doc) });
+    assert.equal(response.status, 200, "the server renders the probe");
+    const bytes = new Uint8Array(await response.arrayBuffer());
+    let worst = 0;
+    drawn.forEach((rgb, i) => rgb.forEach((value, c) => {
+      worst = Math.max(worst, Math.abs(bytes[4 * i + c] - Math.min(1, Math.max(0, value)) * 255));
+    }));
+    assert.ok(worst <= 1.5, `the ${basis} curve drawn is within 1.5/255 of the server's (off by ${worst.toFixed(2)}/255)`);
+    console.log(`spline_probe.json, ${basis}: the curve drawn agrees with the server's render at 16 x (within ${worst.toFixed(2)}/255)`);
+  }
   assert.deepEqual(errors, [], "no script errors");
 } catch (error) {
   failed = true;
