@@ -6,6 +6,8 @@
 // or typing goes on (the preview may then render coarser, and the whole
 // drag makes one history step).
 
+import { element, hexOf, rgbOf } from "./dom.js";
+
 const channelColors = { 1: ["#e8e8e8"], 2: ["#ff9b6a", "#5ec8f8"], 3: ["#ff6060", "#5fd35f", "#6a94ff"] };
 const width = 280;
 const plotHeight = 150;
@@ -16,8 +18,6 @@ const hitRadius = 9;
 // Table attributes hold 4 decimals at most, so that files stay readable.
 const tidy = (value) => Math.round(value * 1e4) / 1e4;
 const clamp = (value, lo, hi) => Math.min(hi, Math.max(lo, value));
-const hexOf = (rgb) => "#" + rgb.map((v) => Math.round(clamp(v, 0, 1) * 255).toString(16).padStart(2, "0")).join("");
-const rgbOf = (hex) => [1, 3, 5].map((i) => tidy(parseInt(hex.slice(i, i + 2), 16) / 255));
 
 // The spline of nodes/semantics/splines.h, over rows of components.
 function splineAt(rows, basis, x) {
@@ -68,12 +68,6 @@ const models = {
     at: (node, rows, x) => splineAt(rows, "linear", x),
   },
 };
-
-function element(tag, properties = {}, children = []) {
-  const result = Object.assign(document.createElement(tag), properties);
-  result.append(...children);
-  return result;
-}
 
 function sizedCanvas(cssWidth, cssHeight) {
   const canvas = element("canvas");

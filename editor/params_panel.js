@@ -8,6 +8,8 @@
 // renaming and deleting change the main graph's sources: they go through
 // onRestructure(change), which applies change(doc) to the whole document.
 
+import { element, hexOf, rgbOf } from "./dom.js";
+
 const paramTypes = ["float", "int", "bool", "color", "vec2", "vec3"];
 // What a param added in the panel starts with.
 const newParams = {
@@ -24,14 +26,7 @@ const logSteps = 1000;
 const namePattern = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 const headingOf = (name, param) => name + (param.doc ? ` — ${param.doc}` : "");
-const hex = (v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, "0");
 const ranged = (param) => param.type !== "bool";  // min and max bound each component
-
-function element(tag, properties = {}, children = []) {
-  const result = Object.assign(document.createElement(tag), properties);
-  result.append(...children);
-  return result;
-}
 
 // The main graph's nodes (and outputs) that read "$name": function bodies'
 // "$name" are their own inputs.
@@ -139,9 +134,9 @@ export class ParamsPanel {
       return [box];
     }
     if (param.type === "color") {
-      const picker = element("input", { type: "color", name, value: "#" + param.default.map(hex).join("") });
+      const picker = element("input", { type: "color", name, value: hexOf(param.default) });
       picker.addEventListener("input", () => {
-        param.default = [1, 3, 5].map((i) => parseInt(picker.value.slice(i, i + 2), 16) / 255);
+        param.default = rgbOf(picker.value);
         edit(true);
       });
       picker.addEventListener("change", () => edit(false));
