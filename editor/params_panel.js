@@ -180,9 +180,18 @@ export class ParamsPanel {
         const field = element("input", { type: "number", step: "any", name: `${name}.${key}`, value: param[key] ?? "",
                                          placeholder: "none" });
         field.addEventListener("change", () => {
+          const value = Number(field.value);
+          if (field.value !== "" && !Number.isFinite(value)) return;
+          // A range must stay a range: min above max is refused here, as the checker would.
+          const [min, max] = key === "min" ? [value, param.max] : [param.min, value];
+          if (field.value !== "" && min !== undefined && max !== undefined && min > max) {
+            message.textContent = `min (${min}) must not be above max (${max})`;
+            field.value = param[key] ?? "";
+            return;
+          }
+          message.textContent = "";
           if (field.value === "") delete param[key];
-          else if (Number.isFinite(Number(field.value))) param[key] = Number(field.value);
-          else return;
+          else param[key] = value;
           this.clampDefault(param);
           changed();
           this.onEdit(false);

@@ -143,7 +143,15 @@ try {
   assert.equal(await page.$eval('input[name="turbulence_amount"]', (slider) => slider.max), "50");
   assert.equal((await paramsOf()).turbulence_amount.max, 50);
   assert.equal((await stats()).compiles, compilesBeforeMax, "a new max never recompiles");
-  console.log("set turbulence_amount's max to 50 in the panel: the slider's max changed, no compile");
+  // A min above that max is refused in the panel, saying why.
+  await page.click('input[name="turbulence_amount.min"]', { clickCount: 3 });
+  await page.keyboard.type("60");
+  await page.keyboard.press("Tab");
+  assert.equal((await paramsOf()).turbulence_amount.min, 0, "the min is kept");
+  const minRefusal = await page.$eval('input[name="turbulence_amount.min"]', (field) =>
+    field.closest(".param-settings").querySelector(".param-message").textContent);
+  assert.match(minRefusal, /must not be above max/);
+  console.log("set turbulence_amount's max to 50 in the panel: the slider's max changed, no compile; a min of 60 refused");
 
   // Rename it: the main graph's reference follows.
   await page.click('input[name="turbulence_amount.name"]', { clickCount: 3 });
