@@ -1,8 +1,8 @@
 // The side panel's params (graph/parse.cpp): a control per param for its
 // default (a slider and a field for float and int, logarithmic over a wide
 // positive range; a checkbox for bool; a colour picker; number fields for
-// vec2 and vec3), a ⚙ toggle per param revealing its name, range, doc and
-// a delete button, and a row to add a param. Value edits write into the
+// vec2 and vec3), a ⚙ toggle per param revealing its name, type, range,
+// doc and a delete button, and a row to add a param. Value edits write into the
 // document's params and call onEdit(interactive), interactive while a drag
 // or typing goes on, so they reach the uniform block only. Adding,
 // renaming and deleting change the main graph's sources: they go through
@@ -46,6 +46,25 @@ export function renameParam(doc, from, to) {
   };
   for (const node of doc.nodes || []) rewrite(node.in);
   rewrite(doc.outputs);
+}
+
+// `param` retyped as `to`: its default converted (a vector's first
+// component for a scalar, a scalar repeated for a vector, a bool as 0 or
+// 1 and back), its range kept where the new type has one.
+export function retypeParam(param, to) {
+  const values = (Array.isArray(param.default) ? param.default : [param.default]).map(Number);
+  const components = { vec2: 2, vec3: 3, color: 3 }[to] ?? 1;
+  param.type = to;
+  if (to === "bool") {
+    param.default = values[0] !== 0;
+    delete param.min;
+    delete param.max;
+  } else if (components === 1) {
+    param.default = to === "int" ? Math.round(values[0]) : values[0];
+    for (const key of ["min", "max"]) if (to === "int" && param[key] !== undefined) param[key] = Math.round(param[key]);
+  } else {
+    param.default = Array.from({ length: components }, (_, i) => values[Math.min(i, values.length - 1)]);
+  }
 }
 
 // The slider of a float or int param: its own min and max, or positions
@@ -155,7 +174,7 @@ export class ParamsPanel {
     });
   }
 
-  // Name, min, max, doc and delete; `changed()` redraws the row's label
+  // Name, type, min, max, doc and delete; `changed()` redraws the row's label
   // and controls after a range or doc edit.
   settings(name, param, changed) {
     const message = element("p", { className: "param-message" });
@@ -174,7 +193,10 @@ export class ParamsPanel {
       this.opened.add(to);
       this.onRestructure((doc) => renameParam(doc, name, to));
     });
-    const fields = [element("label", {}, ["name ", rename])];
+    const type = element("select", { name: `${name}.type`, title: "retype: the nodes reading it are checked anew" },
+                         paramTypes.map((t) => new Option(t, t, false, t === param.type)));
+    type.addEventListener("change", () => this.onRestructure((doc) => retypeParam(doc.params[name], type.value)));
+    const fields = [element("label", {}, ["name ", rename]), element("label", {}, ["type ", type])];
     if (ranged(param)) {
       const bound = (key) => {
         const field = element("input", { type: "number", step: "any", name: `${name}.${key}`, value: param[key] ?? "",

@@ -153,6 +153,20 @@ try {
   assert.match(minRefusal, /must not be above max/);
   console.log("set turbulence_amount's max to 50 in the panel: the slider's max changed, no compile; a min of 60 refused");
 
+  // Retype octaves as a float: turbulence's octaves input wants an int,
+  // and the checker says so there; undo brings the int back.
+  await page.click('button[title="edit param octaves"]');
+  await page.select('select[name="octaves.type"]', "float");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError?.node === "turb", { timeout: 10000 });
+  const retyped = await page.evaluate(() => window.shadetreeEditor.state.lastError);
+  assert.equal(retyped.input, "octaves", retyped.text);
+  assert.equal((await paramsOf()).octaves.type, "float");
+  await pressKeys("Control", "z");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null, { timeout: 10000 });
+  assert.equal((await paramsOf()).octaves.type, "int");
+  await page.click('button[title="edit param octaves"]');  // closed again: the panel below stays in view
+  console.log(`retyped octaves as float: ${retyped.text.replace(/^.*: node/, "node")}; undo made it an int again`);
+
   // Rename it: the main graph's reference follows.
   await page.click('input[name="turbulence_amount.name"]', { clickCount: 3 });
   await page.keyboard.type("stir");
