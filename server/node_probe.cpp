@@ -28,7 +28,7 @@ std::string fresh_name(const json& taken, const std::string& base) {
   auto has = [&](const std::string& name) {
     if (taken.is_object()) return taken.contains(name);
     for (const json& node : taken)
-      if (node.value("id", std::string()) == name || node.value("id", std::string()) == name + "_xy") return true;
+      if (node.value("id", std::string()) == name) return true;
     return false;
   };
   std::string name = base;
@@ -126,12 +126,14 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
       document["nodes"].push_back({{"id", probe}, {"op", "to_color"}, {"in", {{"v", source}}}});
       colour = probe;
       break;
-    case Type::vec2:
-      document["nodes"].push_back({{"id", probe + "_xy"}, {"op", "split"}, {"in", {{"v", source}}}});
+    case Type::vec2: {
+      const std::string parts = fresh_name(document["nodes"], "probe_parts");
+      document["nodes"].push_back({{"id", parts}, {"op", "split"}, {"in", {{"v", source}}}});
       document["nodes"].push_back(
-          {{"id", probe}, {"op", "color"}, {"in", {{"r", probe + "_xy.x"}, {"g", probe + "_xy.y"}, {"b", 0}}}});
+          {{"id", probe}, {"op", "color"}, {"in", {{"r", parts + ".x"}, {"g", parts + ".y"}, {"b", 0}}}});
       colour = probe;
       break;
+    }
     case Type::bool_:
       document["nodes"].push_back({{"id", probe}, {"op", "select"}, {"in", {{"cond", source}, {"then", 1}, {"else", 0}}}});
       colour = probe;
