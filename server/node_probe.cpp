@@ -44,18 +44,19 @@ Result<std::pair<json, std::string>> call_of_function_node(const std::string& te
   json document = json::parse(text, nullptr, false);
   if (!document.is_object() || !document.contains("functions") || !document["functions"].is_object() ||
       !document["functions"].contains(function))
-    return invalid_input("no function \"" + function + "\" in " + file);
+    return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "no function \"" + function + "\""};
   json probe = document["functions"][function];
   const std::string id = node.substr(0, node.find('.'));
   bool found = false;
   for (const json& body_node : probe.value("nodes", json::array())) found |= body_node.value("id", std::string()) == id;
-  if (!found) return invalid_input("no node \"" + id + "\" in function \"" + function + "\"");
+  if (!found) return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "no node \"" + id + "\" in function \"" + function + "\""};
   const json* call = nullptr;
   if (document.contains("nodes") && document["nodes"].is_array())
     for (const json& main_node : document["nodes"])
       if (!call && main_node.value("op", std::string()) == function) call = &main_node;
   if (!call)
-    return invalid_input("the main graph does not call function \"" + function + "\": its nodes have no value to show");
+    return Diagnostic{ExitStatus::invalid_input, file, {}, {},
+                      "the main graph does not call function \"" + function + "\": its nodes have no value to show"};
   const std::string probe_function = fresh_name(document["functions"], function + "_probe");
   probe["outputs"] = {{"value", node}};
   const std::string probe_call = fresh_name(document["nodes"], "probe_call");
@@ -89,14 +90,15 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
   const CheckedNode* probed = nullptr;
   for (const CheckedNode& candidate : checked->main.nodes)
     if (candidate.node->id == id) probed = &candidate;
-  if (!probed) return invalid_input("no node \"" + id + "\" in the main graph of " + file);
+  if (!probed) return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "no node \"" + id + "\" in the main graph"};
   const std::vector<std::string> names = output_names(*checked, *probed);
   std::size_t index = 0;
   if (!output.empty()) {
     while (index < names.size() && names[index] != output) ++index;
-    if (index == names.size()) return invalid_input("node \"" + id + "\" has no output \"" + output + "\"");
+    if (index == names.size())
+      return Diagnostic{ExitStatus::invalid_input, file, id, {}, "no output \"" + output + "\""};
   }
-  if (probed->output_types.empty()) return invalid_input("node \"" + id + "\" has no output to show");
+  if (probed->output_types.empty()) return Diagnostic{ExitStatus::invalid_input, file, id, {}, "no output to show"};
   const Type type = probed->output_types[index];
   const std::string source = output.empty() ? id : id + "." + output;
 
