@@ -24,6 +24,7 @@
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/IR/Verifier.h>
+#include <llvm/Support/Error.h>
 #include <llvm/Support/raw_ostream.h>
 
 #include "codegen/op_library.h"
@@ -510,6 +511,23 @@ void outline_large_ops(llvm::Module& module) {
   }
 }
 
+// Reads the bodies of the library functions the kernel calls, and of those
+// they call: a lazily loaded function has uses only from bodies read.
+bool materialize_called(llvm::Module& module) {
+  for (bool read = true; read;) {
+    read = false;
+    for (llvm::Function& function : module) {
+      if (!function.isMaterializable() || function.use_empty()) continue;
+      if (llvm::Error error = function.materialize()) {
+        llvm::consumeError(std::move(error));
+        return false;
+      }
+      read = true;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
@@ -537,6 +555,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   if (!bind) return bind.error();
   Result<llvm::Function*> run = emitter.emit_run(function_name + "_run");
   if (!run) return run.error();
+  if (!materialize_called(*module)) return failure("the embedded op library bitcode is unreadable");
   outline_large_ops(*module);
   // Drop the library functions this kernel never calls (other widths, other
   // ops) before the optimizer spends time on them.
@@ -547,6 +566,10 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
       function.eraseFromParent();
       erased = true;
     }
+  }
+  if (llvm::Error error = module->materializeAll()) {
+    llvm::consumeError(std::move(error));
+    return failure("the embedded op library bitcode is unreadable");
   }
   return module;
 }

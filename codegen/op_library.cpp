@@ -24,7 +24,7 @@ std::uint64_t op_library_hash() {
 
 std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context) {
   llvm::MemoryBufferRef buffer(bitcode(), "shadetree_ops");
-  auto module = llvm::parseBitcodeFile(buffer, context);
+  auto module = llvm::getLazyBitcodeModule(buffer, context);
   if (!module) {
     llvm::consumeError(module.takeError());
     return nullptr;

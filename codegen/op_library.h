@@ -12,8 +12,10 @@ class Module;
 
 namespace shadetree {
 
-// A fresh copy of the library in `context`; null if the embedded bitcode is
-// unreadable (a build fault).
+// A fresh copy of the library in `context`, loaded lazily: a function's
+// body is read when it is materialized (a kernel calls a few of the
+// library's hundreds of functions, and reading them all took 10 ms of
+// every compile). Null if the embedded bitcode is unreadable (a build fault).
 std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context);
 
 // A hash of the library's bitcode: part of every kernel cache key, so that
