@@ -14,7 +14,6 @@
 #include <sstream>
 #include <vector>
 
-#include <llvm/ExecutionEngine/ObjectCache.h>
 #include <llvm/ExecutionEngine/Orc/CompileUtils.h>
 #include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
@@ -135,59 +134,93 @@ std::filesystem::path cache_folder(const JitSettings& settings) {
   return {};
 }
 
-// Writes each compiled object next to its kernel name; reading is done by
-// the compiler below before any IR is built.
-class DiskObjectCache final : public llvm::ObjectCache {
- public:
-  void notifyObjectCompiled(const llvm::Module* module, llvm::MemoryBufferRef object) override {
-    // Only kernels: LLJIT compiles modules of its own too (__standard_lib).
-    if (folder_.empty() || !module->getModuleIdentifier().starts_with("shade_kernel_")) return;
-    std::error_code error;
-    std::filesystem::create_directories(folder_, error);
-    const auto target = folder_ / (module->getModuleIdentifier() + ".o");
-    const auto temporary =
-        folder_ / (module->getModuleIdentifier() + ".o.partial-" + std::to_string(static_cast<long>(::getpid())));
-    std::ofstream file(temporary, std::ios::binary);
-    file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
-    file.close();
-    if (!file) {  // a cache that cannot be written is only a missed speed-up
-      std::filesystem::remove(temporary, error);
-      return;
-    }
-    std::filesystem::rename(temporary, target, error);
-    if (error) std::filesystem::remove(temporary, error);
-    prune();
-  }
-  std::unique_ptr<llvm::MemoryBuffer> getObject(const llvm::Module*) override { return nullptr; }
-  void set_folder(std::filesystem::path folder, int limit) {
-    folder_ = std::move(folder);
-    limit_ = limit;
-  }
+void optimize_module(llvm::Module& module, llvm::TargetMachine& machine) {
+  llvm::LoopAnalysisManager loops;
+  llvm::FunctionAnalysisManager functions;
+  llvm::CGSCCAnalysisManager cgscc;
+  llvm::ModuleAnalysisManager modules;
+  llvm::PassBuilder builder(&machine);
+  builder.registerModuleAnalyses(modules);
+  builder.registerCGSCCAnalyses(cgscc);
+  builder.registerFunctionAnalyses(functions);
+  builder.registerLoopAnalyses(loops);
+  builder.crossRegisterProxies(loops, functions, cgscc, modules);
+  builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
+}
 
- private:
-  // Keeps the folder to limit_ kernel objects, removing the least recently
-  // used (written, or read: compile() touches what it reads) first: an
-  // editor session compiles a program per edit.
-  void prune() const {
-    std::error_code error;
-    std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> objects;
-    for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
-      const std::string name = entry.path().filename().string();
-      if (name.starts_with("shade_kernel_") && entry.path().extension() == ".o")
-        objects.emplace_back(entry.last_write_time(error), entry.path());
-    }
-    if (objects.size() <= static_cast<std::size_t>(std::max(limit_, 0))) return;
-    std::sort(objects.begin(), objects.end());
-    for (std::size_t i = 0; i + static_cast<std::size_t>(std::max(limit_, 0)) < objects.size(); ++i)
-      std::filesystem::remove(objects[i].second, error);
+Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                             const std::string& name, GatherStrategy gathers,
+                                                             llvm::TargetMachine& machine) {
+  Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
+  if (!module) return module.error();
+  llvm::Module& m = **module;
+  m.setDataLayout(machine.createDataLayout());
+  m.setTargetTriple(machine.getTargetTriple().str());
+  for (llvm::Function& function : m) {
+    if (function.isDeclaration()) continue;
+    function.addFnAttr("target-cpu", machine.getTargetCPU());
+    function.addFnAttr("target-features", machine.getTargetFeatureString());
   }
+  optimize_module(m, machine);
+  return module;
+}
 
-  std::filesystem::path folder_;
-  int limit_ = 0;
-};
+Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine) {
+  llvm::SmallString<0> text;
+  llvm::raw_svector_ostream stream(text);
+  llvm::legacy::PassManager passes;
+  if (machine.addPassesToEmitFile(passes, stream, nullptr, llvm::CodeGenFileType::AssemblyFile))
+    return failure("LLVM cannot emit assembly for this target");
+  passes.run(module);
+  return std::string(text.str());
+}
+
+// Keeps `folder` to `limit` kernel objects, removing the least recently
+// used (written, or read: compile() touches what it reads) first: an
+// editor session compiles a program per edit.
+void prune_objects(const std::filesystem::path& folder, int limit) {
+  std::error_code error;
+  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> objects;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("shade_kernel_") && entry.path().extension() == ".o")
+      objects.emplace_back(entry.last_write_time(error), entry.path());
+  }
+  const std::size_t keep = static_cast<std::size_t>(std::max(limit, 0));
+  if (objects.size() <= keep) return;
+  std::sort(objects.begin(), objects.end());
+  for (std::size_t i = 0; i + keep < objects.size(); ++i) std::filesystem::remove(objects[i].second, error);
+}
+
+// The disk cache: each compiled object next to its kernel name, written
+// to a temporary file and renamed, so a second process never reads half of
+// one. A cache that cannot be written is only a missed speed-up.
+void store_object(const std::filesystem::path& folder, const std::string& name, llvm::MemoryBufferRef object,
+                  int limit) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  static std::atomic<long> writes{0};  // two threads of a process may store the same kernel
+  const auto target = folder / (name + ".o");
+  const auto temporary = folder / (name + ".o.partial-" + std::to_string(static_cast<long>(::getpid())) + "-" +
+                                   std::to_string(++writes));
+  std::ofstream file(temporary, std::ios::binary);
+  file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
+  file.close();
+  if (!file) {
+    std::filesystem::remove(temporary, error);
+    return;
+  }
+  std::filesystem::rename(temporary, target, error);
+  if (error) std::filesystem::remove(temporary, error);
+  prune_objects(folder, limit);
+}
 
 // One LLJIT for the process. Never destroyed: kernels may outlive every
 // static object, and each removes its own code (KernelCode).
+// Compiles run outside the lock, each with a target machine of its own, so
+// two run in parallel and a cache lookup never waits for one (the editor
+// server compiles in the background while it answers from the cache); the
+// lock covers linking objects into the JIT and the caches' bookkeeping.
 class Jit {
  public:
   static Jit& instance() {
@@ -195,79 +228,69 @@ class Jit {
     return *jit;
   }
 
-  Result<CompiledKernel> compile(const ShadeIR& ir, int width, const JitSettings& settings) {
+  Result<CompiledKernel> compile(const ShadeIR& ir, int width, const JitSettings& settings, bool cached_only) {
     if (!jit_) return failure("cannot start the LLVM JIT (--backend interp still works): " + startup_error_);
     if (width == 0) width = host_vector_width();
     const auto start = std::chrono::steady_clock::now();
     const GatherStrategy gathers = effective_gathers(settings);
     std::string name = kernel_name(canonical_key(ir, width, gathers));
-    std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
-    std::lock_guard lock(mutex_);
     auto elapsed = [&] {
       return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
     if (settings.cold) {
+      if (cached_only) return compiled({}, CacheHit::none, 0);
       name += "_cold" + std::to_string(++cold_compiles_);
-      object_cache_->set_folder({}, 0);
-      Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);
+      Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers);
+      if (!object) return object.error();
+      std::lock_guard lock(mutex_);
+      Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
     }
-    if (auto found = resident_.find(name); found != resident_.end())
-      if (std::shared_ptr<const KernelCode> code = found->second.lock()) {
-        keep_recent(code, evicted);
-        return compiled(code, CacheHit::memory, elapsed());
-      }
     const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
-    object_cache_->set_folder(folder, settings.disk_cache_objects);
-    if (!folder.empty()) {
-      const std::filesystem::path file = folder / (name + ".o");
-      auto object = llvm::MemoryBuffer::getFile(file.string());
-      if (object) {
-        Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
-        if (code) {
-          std::error_code ignored;  // recently used: the last to be pruned
-          std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
-          return admit(*code, CacheHit::disk, elapsed(), evicted);
+    std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
+    {
+      std::lock_guard lock(mutex_);
+      if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
+        return compiled(code, CacheHit::memory, elapsed());
+      if (!folder.empty()) {
+        const std::filesystem::path file = folder / (name + ".o");
+        if (auto object = llvm::MemoryBuffer::getFile(file.string())) {
+          Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
+          if (code) {
+            std::error_code ignored;  // recently used: the last to be pruned
+            std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
+            return admit(*code, CacheHit::disk, elapsed(), evicted);
+          }
         }
       }
     }
-    Result<std::shared_ptr<const KernelCode>> code = build_and_add(ir, width, name, gathers);
+    if (cached_only) return compiled({}, CacheHit::none, 0);
+    Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers);
+    if (!object) return object.error();
+    if (!folder.empty()) store_object(folder, name, (*object)->getMemBufferRef(), settings.disk_cache_objects);
+    std::lock_guard lock(mutex_);
+    // Another thread may have compiled the same program meanwhile.
+    if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
+      return compiled(code, CacheHit::none, elapsed());
+    Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
     if (!code) return code.error();
     return admit(*code, CacheHit::none, elapsed(), evicted);
   }
 
-  Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                               const std::string& name, GatherStrategy gathers) {
-    if (!target_machine_) return failure("cannot start the LLVM JIT: " + startup_error_);
-    Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
-    if (!module) return module.error();
-    llvm::Module& m = **module;
-    m.setDataLayout(target_machine_->createDataLayout());
-    m.setTargetTriple(target_machine_->getTargetTriple().str());
-    for (llvm::Function& function : m) {
-      if (function.isDeclaration()) continue;
-      function.addFnAttr("target-cpu", target_machine_->getTargetCPU());
-      function.addFnAttr("target-features", target_machine_->getTargetFeatureString());
-    }
-    optimize_module(m);
-    return module;
-  }
-
-  std::recursive_mutex& mutex() { return mutex_; }
-
-  Result<std::string> assembly(llvm::Module& module) {
-    llvm::SmallString<0> text;
-    llvm::raw_svector_ostream stream(text);
-    llvm::legacy::PassManager passes;
-    if (target_machine_->addPassesToEmitFile(passes, stream, nullptr, llvm::CodeGenFileType::AssemblyFile))
-      return failure("LLVM cannot emit assembly for this target");
-    passes.run(module);
-    return std::string(text.str());
+  // A target machine for the host, at `level`; each compile has its own
+  // (a TargetMachine is not safe to share between threads).
+  Result<std::unique_ptr<llvm::TargetMachine>> target_machine(llvm::CodeGenOptLevel level) const {
+    if (!jit_) return failure("cannot start the LLVM JIT: " + startup_error_);
+    llvm::orc::JITTargetMachineBuilder builder = machine_builder_;
+    builder.setCodeGenOptLevel(level);
+    auto machine = builder.createTargetMachine();
+    if (!machine) return failure("JIT: " + error_text(machine.takeError()));
+    return std::move(*machine);
   }
 
  private:
-  Jit() {
+  Jit() : machine_builder_(llvm::Triple()) {
     // LLVM reports some failures (instruction selection, a broken object
     // file) by aborting; make them the one-line error and status 1 that
     // every other failure of shadetree gets.
@@ -286,69 +309,56 @@ class Jit {
     machine_builder->setCPU(llvm::sys::getHostCPUName().str());
     machine_builder->getFeatures().addFeaturesVector(
         llvm::SubtargetFeatures(host_features()).getFeatures());
-    machine_builder->setCodeGenOptLevel(llvm::CodeGenOptLevel::Aggressive);
-    auto target_machine = machine_builder->createTargetMachine();
-    if (!target_machine) {
-      startup_error_ = error_text(target_machine.takeError());
-      return;
-    }
-    target_machine_ = std::move(*target_machine);
-    llvm::orc::JITTargetMachineBuilder fast_builder = *machine_builder;
-    fast_builder.setCodeGenOptLevel(llvm::CodeGenOptLevel::None);
-    auto fast_target_machine = fast_builder.createTargetMachine();
-    if (!fast_target_machine) {
-      startup_error_ = error_text(fast_target_machine.takeError());
-      return;
-    }
-    fast_target_machine_ = std::move(*fast_target_machine);
-    object_cache_ = std::make_unique<DiskObjectCache>();
-    auto jit = llvm::orc::LLJITBuilder()
-                   .setJITTargetMachineBuilder(*machine_builder)
-                   .setCompileFunctionCreator([this](llvm::orc::JITTargetMachineBuilder builder)
-                                                  -> llvm::Expected<std::unique_ptr<llvm::orc::IRCompileLayer::IRCompiler>> {
-                     auto machine = builder.createTargetMachine();
-                     if (!machine) return machine.takeError();
-                     return std::make_unique<llvm::orc::TMOwningSimpleCompiler>(std::move(*machine),
-                                                                                object_cache_.get());
-                   })
-                   .create();
+    machine_builder_ = *machine_builder;
+    auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(*machine_builder).create();
     if (!jit) {
       startup_error_ = error_text(jit.takeError());
       return;
     }
-    jit_ = std::move(*jit);
     // Generated code may call C runtime helpers (memcpy, memset) that LLVM
     // introduces; resolve them from the process.
     auto process = llvm::orc::DynamicLibrarySearchGenerator::GetForCurrentProcess(
-        jit_->getDataLayout().getGlobalPrefix());
+        (*jit)->getDataLayout().getGlobalPrefix());
     if (!process) {
       startup_error_ = error_text(process.takeError());
-      jit_.reset();
       return;
     }
-    jit_->getMainJITDylib().addGenerator(std::move(*process));
+    (*jit)->getMainJITDylib().addGenerator(std::move(*process));
+    jit_ = std::move(*jit);
   }
 
-  Result<std::shared_ptr<const KernelCode>> build_and_add(const ShadeIR& ir, int width, const std::string& name,
-                                                          GatherStrategy gathers) {
-    auto context = std::make_unique<llvm::LLVMContext>();
-    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, *context, name, gathers);
+  // The calling thread's target machine at `level`, made at its first
+  // compile: making one costs as much as compiling a small kernel.
+  Result<llvm::TargetMachine*> thread_target_machine(llvm::CodeGenOptLevel level) const {
+    thread_local std::map<llvm::CodeGenOptLevel, std::unique_ptr<llvm::TargetMachine>> machines;
+    std::unique_ptr<llvm::TargetMachine>& machine = machines[level];
+    if (!machine) {
+      Result<std::unique_ptr<llvm::TargetMachine>> made = target_machine(level);
+      if (!made) return made.error();
+      machine = std::move(*made);
+    }
+    return machine.get();
+  }
+
+  // The kernel's object file, built on the calling thread.
+  Result<std::unique_ptr<llvm::MemoryBuffer>> compile_object(const ShadeIR& ir, int width, const std::string& name,
+                                                             GatherStrategy gathers) const {
+    Result<llvm::TargetMachine*> machine = thread_target_machine(llvm::CodeGenOptLevel::Aggressive);
+    if (!machine) return machine.error();
+    llvm::LLVMContext context;
+    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, context, name, gathers, **machine);
     if (!module) return module.error();
     // Instruction selection, scheduling and greedy register allocation grow
     // faster than the kernel: a 4000-instruction graph spent 2 s there. A
     // kernel this large is compiled with the fast, linear path instead
     // (slower code, a compile in a fraction of the time).
     if ((*module)->getInstructionCount() > max_instructions_for_full_codegen) {
-      auto object = llvm::orc::SimpleCompiler(*fast_target_machine_)(**module);
-      if (!object) return failure("JIT: " + error_text(object.takeError()));
-      object_cache_->notifyObjectCompiled(module->get(), (*object)->getMemBufferRef());
-      return add_object(name, width, std::move(*object));
+      machine = thread_target_machine(llvm::CodeGenOptLevel::None);
+      if (!machine) return machine.error();
     }
-    llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
-    if (llvm::Error error =
-            jit_->addIRModule(tracker, llvm::orc::ThreadSafeModule(std::move(*module), std::move(context))))
-      return failure("JIT: " + error_text(std::move(error)));
-    return look_up(name, width, tracker);
+    auto object = llvm::orc::SimpleCompiler(**machine)(**module);
+    if (!object) return failure("JIT: " + error_text(object.takeError()));
+    return std::move(*object);
   }
 
   Result<std::shared_ptr<const KernelCode>> add_object(const std::string& name, int width,
@@ -361,8 +371,8 @@ class Jit {
     return look_up(name, width, tracker);
   }
 
-  // The kernel's two functions, once its module or object is in the JIT
-  // under `tracker`; a kernel that cannot be found is removed again.
+  // The kernel's two functions, once its object is in the JIT under
+  // `tracker`; a kernel that cannot be found is removed again.
   Result<std::shared_ptr<const KernelCode>> look_up(const std::string& name, int width,
                                                     const llvm::orc::ResourceTrackerSP& tracker) {
     auto missing = [&](llvm::Error error) -> Diagnostic {
@@ -379,7 +389,18 @@ class Jit {
   }
 
   static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {
+    if (!code) return {};
     return {code->bind, code->run, code->width, milliseconds, cache, code};
+  }
+
+  // The kernel `name` if it is in the JIT, made the most recently used.
+  std::shared_ptr<const KernelCode> resident(const std::string& name,
+                                             std::vector<std::shared_ptr<const KernelCode>>& evicted) {
+    auto found = resident_.find(name);
+    if (found == resident_.end()) return nullptr;
+    std::shared_ptr<const KernelCode> code = found->second.lock();
+    if (code) keep_recent(code, evicted);
+    return code;
   }
 
   // A new kernel: resident, and the most recently used.
@@ -403,29 +424,13 @@ class Jit {
     }
   }
 
-  void optimize_module(llvm::Module& module) {
-    llvm::LoopAnalysisManager loops;
-    llvm::FunctionAnalysisManager functions;
-    llvm::CGSCCAnalysisManager cgscc;
-    llvm::ModuleAnalysisManager modules;
-    llvm::PassBuilder builder(target_machine_.get());
-    builder.registerModuleAnalyses(modules);
-    builder.registerCGSCCAnalyses(cgscc);
-    builder.registerFunctionAnalyses(functions);
-    builder.registerLoopAnalyses(loops);
-    builder.crossRegisterProxies(loops, functions, cgscc, modules);
-    builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
-  }
-
   std::string startup_error_;
-  std::unique_ptr<llvm::TargetMachine> target_machine_;
-  std::unique_ptr<llvm::TargetMachine> fast_target_machine_;  // for huge kernels: see build_and_add
-  std::unique_ptr<DiskObjectCache> object_cache_;
+  llvm::orc::JITTargetMachineBuilder machine_builder_;  // the host, with all its features
   std::unique_ptr<llvm::orc::LLJIT> jit_;
-  std::recursive_mutex mutex_;  // recursive: a KernelCode may go while a compile holds it
+  std::recursive_mutex mutex_;  // recursive: a KernelCode may go while the lock is held
   std::map<std::string, std::weak_ptr<const KernelCode>> resident_;  // every kernel in the JIT, by name
   std::vector<std::shared_ptr<const KernelCode>> recent_;            // the memory cache, most recent first
-  int cold_compiles_ = 0;
+  std::atomic<int> cold_compiles_{0};
 };
 
 }  // namespace
@@ -439,7 +444,13 @@ int host_vector_width() {
 long resident_kernel_count() { return resident_kernels.load(); }
 
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
-  return Jit::instance().compile(ir, width, settings);
+  return Jit::instance().compile(ir, width, settings, false);
+}
+
+std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
+  Result<CompiledKernel> found = Jit::instance().compile(ir, width, settings, true);
+  if (!found || !found->code) return std::nullopt;
+  return *found;
 }
 
 // Measured with `shadetree bench --gathers` (figures in docs/architecture.md):
@@ -453,12 +464,14 @@ GatherStrategy host_gather_strategy() {
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();
-  std::lock_guard lock(Jit::instance().mutex());  // the target machine is shared with compile()
+  Result<std::unique_ptr<llvm::TargetMachine>> machine =
+      Jit::instance().target_machine(llvm::CodeGenOptLevel::Aggressive);
+  if (!machine) return machine.error();
   llvm::LLVMContext context;
-  Result<std::unique_ptr<llvm::Module>> module = Jit::instance().build_optimized_module(
-      ir, width, context, "shade_kernel", effective_gathers(settings));
+  Result<std::unique_ptr<llvm::Module>> module =
+      build_optimized_module(ir, width, context, "shade_kernel", effective_gathers(settings), **machine);
   if (!module) return module.error();
-  if (listing == Listing::assembly) return Jit::instance().assembly(**module);
+  if (listing == Listing::assembly) return assembly(**module, **machine);
   std::string text;
   llvm::raw_string_ostream stream(text);
   (*module)->print(stream, nullptr);

@@ -59,8 +59,13 @@ struct JitSettings {
 GatherStrategy host_gather_strategy();
 
 // Compiles (or finds) the kernel for `ir` at `width` (0: host width).
-// Thread-safe. LLVM failures come back as diagnostics with status 1.
+// Thread-safe, and compiles run in parallel. LLVM failures come back as
+// diagnostics with status 1.
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
+
+// The kernel for `ir` if it is in the memory or the disk cache (never with
+// JitSettings::cold); compiles nothing.
+std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
 
 // The kernel's optimized LLVM IR, or its assembly.
 enum class Listing { optimized_llvm_ir, assembly };

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include "pipeline/compile_graph.h"
@@ -226,6 +227,46 @@ TEST(JitCompiler, TheDiskCacheKeepsTheMostRecentlyUsedObjects) {
   for (const auto& entry : std::filesystem::directory_iterator(folder)) objects += entry.path().extension() == ".o";
   EXPECT_EQ(objects, 3u);
   std::filesystem::remove_all(folder);
+}
+
+TEST(JitCompiler, CachedKernelFindsOnlyWhatWasCompiled) {
+  Result<LoadedGraph> graph = constant_graph(300.0f);
+  ASSERT_TRUE(graph.ok());
+  EXPECT_FALSE(cached_kernel(graph->ir, 4, memory_only()).has_value()) << "nothing is compiled to look";
+  ASSERT_TRUE(compile_kernel(graph->ir, 4, memory_only()).ok());
+  std::optional<CompiledKernel> found = cached_kernel(graph->ir, 4, memory_only());
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(found->cache, CacheHit::memory);
+  EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(graph->ir, *found)), 300.0f);
+  JitSettings cold = memory_only();
+  cold.cold = true;
+  EXPECT_FALSE(cached_kernel(graph->ir, 4, cold).has_value()) << "a cold compile bypasses the caches";
+}
+
+// Compiles run outside the JIT's lock: threads compiling the same program
+// at once all get one working kernel, and different programs all compile.
+TEST(JitCompiler, ThreadsCompileInParallel) {
+  constexpr int threads = 6;
+  std::vector<Result<CompiledKernel>> same(threads, Diagnostic{}), different(threads, Diagnostic{});
+  Result<LoadedGraph> shared_graph = constant_graph(400.0f);
+  ASSERT_TRUE(shared_graph.ok());
+  std::vector<Result<LoadedGraph>> graphs;
+  for (int i = 0; i < threads; ++i) graphs.push_back(constant_graph(401.0f + static_cast<float>(i)));
+  {
+    std::vector<std::jthread> running;
+    for (int i = 0; i < threads; ++i)
+      running.emplace_back([&, i] {
+        same[i] = compile_kernel(shared_graph->ir, 4, memory_only());
+        different[i] = compile_kernel(graphs[i]->ir, 4, memory_only());
+      });
+  }
+  for (int i = 0; i < threads; ++i) {
+    ASSERT_TRUE(same[i].ok()) << same[i].error().to_string();
+    ASSERT_TRUE(different[i].ok()) << different[i].error().to_string();
+    EXPECT_EQ(same[i]->code, same[0]->code) << "one kernel in the JIT for one program";
+    EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(shared_graph->ir, *same[i])), 400.0f);
+    EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(graphs[i]->ir, *different[i])), 401.0f + static_cast<float>(i));
+  }
 }
 
 }  // namespace
