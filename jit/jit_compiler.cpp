@@ -447,6 +447,11 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
   return Jit::instance().compile(ir, width, settings, false);
 }
 
+std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& settings) {
+  if (width == 0) width = host_vector_width();
+  return kernel_name(canonical_key(ir, width, effective_gathers(settings)));
+}
+
 std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
   Result<CompiledKernel> found = Jit::instance().compile(ir, width, settings, true);
   if (!found || !found->code) return std::nullopt;

@@ -67,6 +67,10 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
 // JitSettings::cold); compiles nothing.
 std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
 
+// The name the JIT knows the kernel of `ir` by: equal for two programs
+// exactly when they compile to the same machine code.
+std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& settings = {});
+
 // The kernel's optimized LLVM IR, or its assembly.
 enum class Listing { optimized_llvm_ir, assembly };
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings = {});

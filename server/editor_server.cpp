@@ -129,6 +129,7 @@ EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, Ser
       graphs_(std::move(graphs)),
       editor_(std::move(editor)),
       files_(graph_files()),
+      kernels_(options.jit, options.background_compiles),
       server_(new httplib::Server) {}
 
 EditorServer::~EditorServer() { stop(); }
@@ -229,7 +230,8 @@ void EditorServer::add_routes() {
     send_json(response, {{"graphs", graphs_.graph_files()}});
   });
   http.Get("/api/stats", [this](const httplib::Request&, httplib::Response& response) {
-    send_json(response, {{"compiles", compiles_.load()},
+    send_json(response, {{"compiles", kernels_.compiles()},
+                         {"compiling", kernels_.compiling()},
                          {"previews", previews_.load()},
                          {"rendering", rendering_.load()},
                          {"kernels", resident_kernel_count()}});
@@ -283,8 +285,8 @@ void EditorServer::add_routes() {
   // width x height up to `max_side`, or sends the error and returns nothing.
   struct Rendered {
     Image image;
-    CacheHit kernel;
-    double compile_milliseconds;  // graph text to machine code
+    PreviewKernel::Source kernel;
+    double compile_milliseconds;  // graph text to a kernel that runs
   };
   auto render_body = [this, graph_path](const httplib::Request& request, httplib::Response& response,
                                         int max_side) -> std::optional<Rendered> {
@@ -317,23 +319,19 @@ void EditorServer::add_routes() {
     }
     Result<LoadedGraph> loaded = compile_graph_text(body, path->string(), {}, {}, files_);
     if (!loaded) return unprocessable(loaded.error());
-    // The kernel: found in the caches unless the program changed.
-    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 0, options_.jit);
-    if (!compiled) return send_error(response, 500, compiled.error().to_string()), std::nullopt;
-    const CacheHit cache = compiled->cache;
-    if (cache == CacheHit::none) ++compiles_;
-    const std::unique_ptr<Kernel> kernel = make_jit_kernel(loaded->ir, *compiled);
+    Result<PreviewKernel> kernel = kernels_.kernel_for(loaded->ir);
+    if (!kernel) return send_error(response, 500, kernel.error().to_string()), std::nullopt;
     const double compile_milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
     preview.cancel = cancel.get();
     ++rendering_;
-    Result<Image> image = render_preview(*loaded, *kernel, preview);
+    Result<Image> image = render_preview(*loaded, *kernel->kernel, preview);
     --rendering_;
     if (cancel) release_slot(slot, cancel);
     if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
     if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
-    return Rendered{std::move(*image), cache, compile_milliseconds};
+    return Rendered{std::move(*image), kernel->source, compile_milliseconds};
   };
 
   http.Post("/api/preview", [this, render_body](const httplib::Request& request, httplib::Response& response) {
@@ -344,10 +342,7 @@ void EditorServer::add_routes() {
     response.set_content(rgba_bytes(rendered->image), "application/octet-stream");
     response.set_header("X-Width", std::to_string(rendered->image.width));
     response.set_header("X-Height", std::to_string(rendered->image.height));
-    const char* kernel_source = rendered->kernel == CacheHit::none     ? "compiled"
-                                : rendered->kernel == CacheHit::memory ? "memory"
-                                                                       : "disk";
-    response.set_header("X-Kernel", kernel_source);
+    response.set_header("X-Kernel", source_name(rendered->kernel));
     const double milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     response.set_header("X-Milliseconds", std::to_string(milliseconds));

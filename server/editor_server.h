@@ -24,9 +24,10 @@
 //   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "error": {...}}
 //   POST /api/preview?path=P&width=W&height=H&frame=F[&node=ID][&slot=S]
 //                               renders the body as graph P: W x H RGBA bytes, rows from the top;
-//                               headers X-Width, X-Height, X-Kernel (compiled | memory | disk),
+//                               headers X-Width, X-Height, X-Kernel (memory | disk | compiled |
+//                               compiling: server/preview_kernels.h),
 //                               X-Milliseconds (X-Compile-Milliseconds of them from the
-//                               graph's text to its machine code). node=ID (or ID.output): that node's value
+//                               graph's text to a kernel that runs). node=ID (or ID.output): that node's value
 //                               instead of the outputs (server/node_probe.h), for thumbnails; with
 //                               function=F, ID is a node of function F's body.
 //                               slot=S: a newer request of the same slot cancels this one,
@@ -34,7 +35,8 @@
 //                               volume marches at a coarser step (render/graph_preview.h)
 //   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr
 //                               the body rendered as an image file (up to max_export_side)
-//   GET  /api/stats             {"compiles": kernels compiled since start, "previews": N,
+//   GET  /api/stats             {"compiles": kernels compiled since start, "compiling": in the
+//                                background now, "previews": N,
 //                                "rendering": previews in progress, "kernels": JIT kernels resident}
 #pragma once
 
@@ -48,6 +50,7 @@
 #include "graph/check.h"
 #include "graph/diagnostic.h"
 #include "jit/jit_compiler.h"
+#include "server/preview_kernels.h"
 #include "server/served_folder.h"
 
 namespace httplib {
@@ -66,6 +69,7 @@ struct ServeOptions {
   int max_preview_side = 2048;
   int max_export_side = 4096;
   JitSettings jit;
+  int background_compiles = 2;  // at once (server/preview_kernels.h)
 };
 
 class EditorServer {
@@ -77,7 +81,7 @@ class EditorServer {
   int port() const { return port_; }
   const std::string& token() const { return options_.token; }
   std::string url() const;  // what to open, token included
-  long compiles() const { return compiles_; }
+  long compiles() const { return kernels_.compiles(); }
 
   void stop();  // and waits for the server's thread
 
@@ -91,10 +95,11 @@ class EditorServer {
   ServeOptions options_;
   ServedFolder graphs_, editor_;
   GraphFiles files_;  // images and meshes the graphs name, kept while unchanged on disk
+  PreviewKernels kernels_;
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   int port_ = 0;
-  std::atomic<long> compiles_{0}, previews_{0}, rendering_{0};
+  std::atomic<long> previews_{0}, rendering_{0};
   std::mutex slots_mutex_;
   std::map<std::string, std::shared_ptr<std::atomic<bool>>> slots_;  // slot -> its render in progress
 };

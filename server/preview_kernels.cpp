@@ -1,0 +1,62 @@
+#include "server/preview_kernels.h"
+
+#include <algorithm>
+
+#include "jit/jit_kernel.h"
+
+namespace shadetree {
+
+const char* source_name(PreviewKernel::Source source) {
+  switch (source) {
+    case PreviewKernel::Source::memory: return "memory";
+    case PreviewKernel::Source::disk: return "disk";
+    case PreviewKernel::Source::compiled: return "compiled";
+    case PreviewKernel::Source::compiling: break;
+  }
+  return "compiling";
+}
+
+PreviewKernels::PreviewKernels(JitSettings settings, int background_compiles)
+    : settings_(std::move(settings)), background_compiles_(background_compiles) {}
+
+PreviewKernels::~PreviewKernels() {
+  std::lock_guard lock(mutex_);
+  compiling_.clear();  // each tiered kernel waits for its compile
+}
+
+void PreviewKernels::forget_finished() {
+  std::erase_if(compiling_, [](const Compiling& entry) { return entry.kernel->report().jit_ready; });
+}
+
+int PreviewKernels::compiling() {
+  std::lock_guard lock(mutex_);
+  forget_finished();
+  return static_cast<int>(compiling_.size());
+}
+
+Result<PreviewKernel> PreviewKernels::kernel_for(const ShadeIR& ir) {
+  if (std::optional<CompiledKernel> cached = cached_kernel(ir, 0, settings_)) {
+    const auto source = cached->cache == CacheHit::disk ? PreviewKernel::Source::disk : PreviewKernel::Source::memory;
+    return PreviewKernel{make_jit_kernel(ir, *cached), source};
+  }
+  {
+    const std::string identity = kernel_identity(ir, 0, settings_);
+    std::lock_guard lock(mutex_);
+    forget_finished();
+    auto same = std::find_if(compiling_.begin(), compiling_.end(),
+                             [&](const Compiling& entry) { return entry.identity == identity; });
+    if (same != compiling_.end()) return PreviewKernel{same->kernel, PreviewKernel::Source::compiling};
+    if (static_cast<int>(compiling_.size()) < background_compiles_) {
+      std::shared_ptr<const TieredKernel> tiered = make_tiered_kernel(ir, 0, settings_);
+      ++compiles_;
+      compiling_.push_back({identity, tiered});
+      return PreviewKernel{tiered, PreviewKernel::Source::compiling};
+    }
+  }
+  Result<CompiledKernel> compiled = compile_kernel(ir, 0, settings_);
+  if (!compiled) return compiled.error();
+  if (compiled->cache == CacheHit::none) ++compiles_;
+  return PreviewKernel{make_jit_kernel(ir, *compiled), PreviewKernel::Source::compiled};
+}
+
+}  // namespace shadetree

@@ -1,0 +1,62 @@
+// The kernel each preview of `shadetree serve` renders with. A program the
+// JIT has compiled (memory or disk cache) runs compiled. A new program, an
+// edit of the graph, starts compiling in the background and renders on the
+// interpreter meanwhile, switching to the JIT between kernel runs once it
+// is ready (pipeline/tiered_kernel.h, the backends agree to the bit): the
+// edit's first preview waits for no compile. Requests for a program whose
+// compile is under way share it. At most `background_compiles` run at once
+// (a graph opened draws a thumbnail per node, each its own program); past
+// that, a new program compiles before it renders. Either way, each program
+// compiles once, when first seen. Volumes too: their march is slower on
+// the interpreter, but it switches to the JIT at its next run, and an
+// edit's first draft came out about as fast as compiling first
+// (bench/editor_latency_benchmark.cpp).
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "graph/diagnostic.h"
+#include "ir/kernel.h"
+#include "jit/jit_compiler.h"
+#include "pipeline/tiered_kernel.h"
+
+namespace shadetree {
+
+struct PreviewKernel {
+  enum class Source { memory, disk, compiled, compiling };
+  std::shared_ptr<const Kernel> kernel;
+  Source source = Source::compiled;
+};
+
+// "memory", "disk", "compiled" or "compiling" (X-Kernel).
+const char* source_name(PreviewKernel::Source source);
+
+class PreviewKernels {
+ public:
+  PreviewKernels(JitSettings settings, int background_compiles);
+  ~PreviewKernels();  // waits for the compiles under way
+
+  Result<PreviewKernel> kernel_for(const ShadeIR& ir);
+
+  int compiling();  // background compiles under way
+  long compiles() const { return compiles_; }  // started since construction, in either way
+
+ private:
+  struct Compiling {
+    std::string identity;
+    std::shared_ptr<const TieredKernel> kernel;
+  };
+  void forget_finished();  // under mutex_
+
+  JitSettings settings_;
+  int background_compiles_;
+  std::mutex mutex_;
+  std::vector<Compiling> compiling_;
+  std::atomic<long> compiles_{0};
+};
+
+}  // namespace shadetree
