@@ -8,6 +8,7 @@
 import { api, errorOf, imageOf } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
 import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
+import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
 import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
@@ -55,7 +56,11 @@ const paramsPanel = new ParamsPanel(byId("params"), {
   state,
   documentOf: () => graphView.document(),
   onEdit: (interactive) => edited({ interactive }),
-  onRestructure: restructureParams,
+  onRestructure: restructure,
+});
+const functionInputs = new FunctionInputs(byId("function-inputs"), {
+  documentOf: () => graphView.document(),
+  onRestructure: restructure,
 });
 
 function setStatus(text, isError) {
@@ -119,12 +124,15 @@ function showHistoryState() {
 // Adding, renaming or deleting a param changes the main graph's sources
 // (and a rename its references): the canvas's wires are read back into
 // the document first, and the canvas is built again from it.
-function restructureParams(change) {
+// A change of a scope's sources (params, function inputs): applied to the
+// whole document, then the canvas and panels drawn anew.
+function restructure(change) {
   graphView.rememberPositions();
   state.doc = graphView.document();
   change(state.doc);
-  if (!state.scope) graphView.show();
+  graphView.show();
   paramsPanel.show();
+  showScopes();
   edited();
 }
 
@@ -203,6 +211,7 @@ function showScopes() {
   select.value = graphView.scopeKey;
   select.disabled = names.length === 0;
   byId("scope-signature").textContent = state.scope ? functionSignature(state.doc, state.scope) : "";
+  functionInputs.show(state.scope);
 }
 
 function showScope(scope) {

@@ -10,9 +10,9 @@
 
 import { element, hexOf, rgbOf } from "./dom.js";
 
-const paramTypes = ["float", "int", "bool", "color", "vec2", "vec3"];
+export const paramTypes = ["float", "int", "bool", "color", "vec2", "vec3"];
 // What a param added in the panel starts with.
-const newParams = {
+export const newParams = {
   float: { type: "float", default: 0.5, min: 0, max: 1 },
   int: { type: "int", default: 1, min: 0, max: 10 },
   bool: { type: "bool", default: false },
@@ -28,8 +28,9 @@ const namePattern = /^[A-Za-z_][A-Za-z0-9_]*$/;
 const headingOf = (name, param) => name + (param.doc ? ` — ${param.doc}` : "");
 const ranged = (param) => param.type !== "bool";  // min and max bound each component
 
-// The main graph's nodes (and outputs) that read "$name": function bodies'
-// "$name" are their own inputs.
+// The nodes (and outputs) of a body that read "$name": the main graph's
+// for a param (function bodies' "$name" are their own inputs), a
+// function's for one of its inputs.
 export function paramUsers(doc, name) {
   const reference = `$${name}`;
   const users = (doc.nodes || []).filter((node) => Object.values(node.in || {}).includes(reference)).map((node) => node.id);

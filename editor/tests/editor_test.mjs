@@ -242,6 +242,26 @@ try {
   // spline node, and drag a control point up in the side panel's curve.
   await page.select("#scope", "marble_color");
   await page.waitForFunction(() => window.shadetreeEditor.viewOf("ramp"));
+
+  // Its inputs: add one (the file stays valid: the preview is drawn
+  // again), retype it, be refused deleting one the body reads, delete it.
+  const inputsOf = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().functions.marble_color.inputs);
+  const previewsBeforeInput = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  await page.type('input[name="new input name"]', "gain");
+  await page.click('button[title^="add an input"]');
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeInput);
+  assert.deepEqual((await inputsOf()).gain, { type: "float", default: 0.5 });
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.lastError), null, "calls stay valid");
+  assert.match(await page.$eval("#scope-signature", (e) => e.textContent), /gain/);
+  await page.select('select[name="input gain.type"]', "vec2");
+  assert.deepEqual((await inputsOf()).gain, { type: "vec2", default: [0.5, 0.5] });
+  await page.click('button[title="delete input s"]');
+  assert.match(await page.$eval(".input-message", (e) => e.textContent), /input s is read by unit/);
+  assert.ok((await inputsOf()).s, "an input the body reads is kept");
+  await page.click('button[title="delete input gain"]');
+  assert.equal((await inputsOf()).gain, undefined);
+  await page.waitForFunction(() => window.shadetreeEditor.viewOf("ramp"));
+  console.log("marble_color: added input gain, retyped it, refused deleting s, deleted gain");
   const title = await titlePoint("ramp");
   await page.mouse.click(title[0], title[1]);
   await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
