@@ -30,7 +30,10 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
     VolumeView view{request.width, request.height, request.frame};
     VolumeRenderOptions options;
     options.threads = request.threads;
-    if (request.draft) options.step = draft_step_factor * march_step(*graph.render.volume);
+    if (request.draft) {
+      options.step = draft_step_factor * march_step(*graph.render.volume);
+      options.shadow_step = draft_step_factor * reference_step(*graph.render.volume);
+    }
     options.cancel = request.cancel;
     return render_volume(kernel, loaded.params, *scene, *graph.render.volume,
                          Camera(scene->desc().camera, request.width, request.height), view, options);

@@ -13,8 +13,9 @@
 
 namespace shadetree {
 
-// A draft volume preview's step, in units of the volume's march step. Its
-// density stays as it is: opacity is defined per reference step.
+// A draft volume preview's steps, in units of the volume's march step and,
+// for its shadow rays, of its reference step. Its density stays as it is:
+// opacity is defined per reference step.
 inline constexpr float draft_step_factor = 4.0f;
 
 struct PreviewRequest {
@@ -22,7 +23,7 @@ struct PreviewRequest {
   int height = 256;
   float frame = 0.0f;
   int threads = 0;  // 0: all cores
-  bool draft = false;  // volumes march at draft_step_factor x their step (the editor's previews while editing)
+  bool draft = false;  // volumes march, shadows too, at draft_step_factor x their steps (the editor's previews while editing)
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (render/image_tiles.h)
 };
 

@@ -109,7 +109,7 @@ struct TileScratch {
 class Marcher {
  public:
   Marcher(const Kernel& kernel, const Scene& scene, const VolumeDesc& volume, float step, float reference_step,
-          bool jitter, bool shadows, const VolumeRenderOptions& options)
+          float shadow_step, bool jitter, bool shadows, const VolumeRenderOptions& options)
       : kernel_(kernel),
         layout_(kernel.outputs()),
         scene_(scene),
@@ -117,6 +117,7 @@ class Marcher {
         hi_(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]),
         step_(step),
         reference_step_(reference_step),
+        shadow_step_(shadow_step),
         jitter_(jitter),
         lit_(scene.desc().lighting == Lighting::lit),
         shadows_(lit_ && shadows && !scene.lights().empty()),
@@ -302,12 +303,13 @@ class Marcher {
   }
 
   // Gilet & Dischler 2010's "Phong with shadows": from each shaded sample a
-  // secondary march toward each light, at the reference step (so that the
-  // shadows do not change with the march step), multiplying the light's
+  // secondary march toward each light, at the reference step unless told
+  // otherwise (so that the shadows do not change with the march step: a
+  // draft's coarser march still has them), multiplying the light's
   // transmittance by 1 - alpha of every segment, until the ray leaves the
   // box, reaches the light or lets through less than the termination.
   void march_shadows(std::vector<ShadowRay>& rays, std::vector<float>& transmittance, TileScratch& scratch) const {
-    const float shadow_step = reference_step_;
+    const float shadow_step = shadow_step_;
     std::vector<ShadowRay*> live;
     for (ShadowRay& ray : rays)
       if (ray.t < ray.end) live.push_back(&ray);
@@ -463,7 +465,7 @@ class Marcher {
   const OutputLayout& layout_;
   const Scene& scene_;
   glm::vec3 lo_, hi_;
-  float step_, reference_step_;
+  float step_, reference_step_, shadow_step_;
   bool jitter_, lit_, shadows_, refracts_;
   const VolumeRenderOptions& options_;
   glm::vec3 background_;
@@ -494,8 +496,12 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     return invalid_input("the ray marcher needs a volume graph with an output \"density\"");
   const float step = options.step != 0.0f ? options.step : march_step(volume);
   if (std::string problem = step_problem(volume, step); !problem.empty()) return invalid_input(problem);
+  if (options.shadow_step != 0.0f)
+    if (std::string problem = step_problem(volume, options.shadow_step); !problem.empty())
+      return invalid_input("shadow " + problem);
+  const float shadow_step = options.shadow_step != 0.0f ? options.shadow_step : reference_step(volume);
   const bool jitter = options.jitter.value_or(volume.jitter);
-  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), jitter,
+  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), shadow_step, jitter,
                         options.shadows && scene.desc().shadows, options);
 
   Image image;

@@ -41,6 +41,7 @@ struct VolumeRenderOptions {
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
   bool shadows = true;  // and the scene's "shadows": a secondary march toward each light
+  float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
   ProgressCallback progress;  // may be empty

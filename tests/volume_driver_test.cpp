@@ -187,6 +187,27 @@ TEST(VolumeDriver, ShadowsOnlyDarken) {
   EXPECT_EQ(render(*kernel, loaded, desc, unit_box(0.01f), 40).pixels, plain.pixels);
 }
 
+// Shadow rays composite with the same per-reference-step opacity as the
+// march, so a coarser shadow step (a draft's) moves the shadows little
+// while it takes proportionally fewer samples.
+TEST(VolumeDriver, ACoarserShadowStepChangesTheShadowsLittle) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "thin", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {1.0f, 0.0f, -0.3f};
+  VolumeDesc volume = unit_box(0.01f);
+  VolumeRenderStats fine_stats, coarse_stats;
+  const Image fine = render(*kernel, loaded, desc, volume, 40, {}, &fine_stats);
+  VolumeRenderOptions coarse_shadows;
+  coarse_shadows.shadow_step = 4.0f * reference_step(volume);
+  const Image coarse = render(*kernel, loaded, desc, volume, 40, coarse_shadows, &coarse_stats);
+  EXPECT_LT(largest_difference(coarse, fine), 0.03f);
+  EXPECT_NE(coarse.pixels, fine.pixels) << "the shadow step reaches the shadow march";
+  EXPECT_LT(coarse_stats.shadow_samples, fine_stats.shadow_samples / 3);
+  EXPECT_EQ(coarse_stats.density_samples - coarse_stats.shadow_samples,
+            fine_stats.density_samples - fine_stats.shadow_samples) << "the march itself is unchanged";
+}
+
 // A ray entering glass of index 1.5 at 30 degrees bends to asin(sin 30 /
 // 1.5) = 19.47 degrees (Snell's law), which is where it meets a wall 1.9
 // units further down: at x = 1.9 tan(19.47) = 0.672 instead of 1.097. The
@@ -315,14 +336,16 @@ TEST(VolumeDriver, RefusesStepsThatAreNotPositiveOrTooSmall) {
   const LoadedGraph loaded = compile_volume("", R"("density": 0.5)");
   Result<Scene> scene = Scene::build(looking_down_z(Lighting::none), "volume.json", {});
   ASSERT_TRUE(scene.ok());
-  for (float step : {-1.0f, 1e-6f}) {
-    VolumeRenderOptions options;
-    options.step = step;
-    Result<Image> image = render_volume(*make_interpreted_kernel(loaded.ir), loaded.params, *scene, unit_box(0.1f),
-                                        Camera(scene->desc().camera, 4, 4), VolumeView{4, 4, 0.0f}, options);
-    ASSERT_FALSE(image.ok()) << step;
-    EXPECT_EQ(image.error().status, ExitStatus::invalid_input);
-  }
+  for (float step : {-1.0f, 1e-6f})
+    for (bool shadow : {false, true}) {
+      VolumeRenderOptions options;
+      (shadow ? options.shadow_step : options.step) = step;
+      Result<Image> image = render_volume(*make_interpreted_kernel(loaded.ir), loaded.params, *scene, unit_box(0.1f),
+                                          Camera(scene->desc().camera, 4, 4), VolumeView{4, 4, 0.0f}, options);
+      ASSERT_FALSE(image.ok()) << step;
+      EXPECT_EQ(image.error().status, ExitStatus::invalid_input);
+      EXPECT_EQ(image.error().message.starts_with("shadow step"), shadow) << image.error().message;
+    }
 }
 
 // Every volume graph of the gallery: the interpreter and the JIT give the
