@@ -11,9 +11,9 @@ const char* source_name(PreviewKernel::Source source) {
     case PreviewKernel::Source::memory: return "memory";
     case PreviewKernel::Source::disk: return "disk";
     case PreviewKernel::Source::compiled: return "compiled";
-    case PreviewKernel::Source::compiling: break;
+    case PreviewKernel::Source::compiling: return "compiling";
   }
-  return "compiling";
+  return "";
 }
 
 PreviewKernels::PreviewKernels(JitSettings settings, int background_compiles)
@@ -35,17 +35,20 @@ int PreviewKernels::compiling() {
 }
 
 Result<PreviewKernel> PreviewKernels::kernel_for(const ShadeIR& ir) {
-  if (std::optional<CompiledKernel> cached = cached_kernel(ir, 0, settings_)) {
-    const auto source = cached->cache == CacheHit::disk ? PreviewKernel::Source::disk : PreviewKernel::Source::memory;
-    return PreviewKernel{make_jit_kernel(ir, *cached), source};
-  }
   {
+    // A compile under way is looked for before the caches, under the lock:
+    // one is forgotten only once its kernel is in the memory cache, so no
+    // program starts compiling twice.
     const std::string identity = kernel_identity(ir, 0, settings_);
     std::lock_guard lock(mutex_);
     forget_finished();
     auto same = std::find_if(compiling_.begin(), compiling_.end(),
                              [&](const Compiling& entry) { return entry.identity == identity; });
     if (same != compiling_.end()) return PreviewKernel{same->kernel, PreviewKernel::Source::compiling};
+    if (std::optional<CompiledKernel> cached = cached_kernel(ir, 0, settings_)) {
+      const auto source = cached->cache == CacheHit::disk ? PreviewKernel::Source::disk : PreviewKernel::Source::memory;
+      return PreviewKernel{make_jit_kernel(ir, *cached), source};
+    }
     if (static_cast<int>(compiling_.size()) < background_compiles_) {
       std::shared_ptr<const TieredKernel> tiered = make_tiered_kernel(ir, 0, settings_);
       ++compiles_;
