@@ -9,6 +9,16 @@
 #include <algorithm>
 #include <vector>
 
+// Calls into generated code. Clang's -fsanitize=function (part of
+// -fsanitize=undefined) checks an indirect call by reading a type
+// signature placed just before the callee; JIT code has none, and a kernel
+// that began a page made that read fault (the fuzzer found it).
+#if defined(__clang__)
+#define SHADETREE_CALLS_JIT_CODE __attribute__((no_sanitize("function")))
+#else
+#define SHADETREE_CALLS_JIT_CODE
+#endif
+
 namespace shadetree {
 namespace {
 
@@ -28,7 +38,7 @@ class JitKernel final : public Kernel {
 
 class JitBinding final : public BoundKernel {
  public:
-  JitBinding(const JitKernel& kernel, const float* params, const UniformInputs& uniforms)
+  SHADETREE_CALLS_JIT_CODE JitBinding(const JitKernel& kernel, const float* params, const UniformInputs& uniforms)
       : BoundKernel(kernel.reads(), kernel.outputs()),
         compiled_(kernel.compiled_),
         state_(static_cast<std::size_t>(std::max(kernel.state_size_, 1))),
@@ -45,7 +55,7 @@ class JitBinding final : public BoundKernel {
       tail_outputs_.push_back(tail_scratch_.data() + (tail_inputs_.size() + p) * width_);
   }
 
-  void run(const SampleInputs& inputs, float* const* outputs, std::size_t count) override {
+  SHADETREE_CALLS_JIT_CODE void run(const SampleInputs& inputs, float* const* outputs, std::size_t count) override {
     const std::size_t full = count / width_ * width_;
     if (full > 0) compiled_.run(state_.data(), inputs.planes, outputs, static_cast<std::int64_t>(full));
     const std::size_t tail = count - full;
