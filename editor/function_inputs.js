@@ -5,9 +5,7 @@
 // leaves every call's "in". Changes go through onRestructure(change),
 // which applies change(doc) to the whole document.
 import { element } from "./dom.js";
-import { newParams, paramTypes, paramUsers, retypeParam } from "./params_panel.js";
-
-const namePattern = /^[A-Za-z_][A-Za-z0-9_]*$/;
+import { namePattern, newParams, paramTypes, paramUsers, retypeParam } from "./params_panel.js";
 
 const typeOf = (spec) => (typeof spec === "string" ? spec : spec.type);
 

@@ -23,7 +23,7 @@ export const newParams = {
 // A positive range this wide (max / min) gets a logarithmic slider.
 const logarithmicRatio = 1000;
 const logSteps = 1000;
-const namePattern = /^[A-Za-z_][A-Za-z0-9_]*$/;
+export const namePattern = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 const headingOf = (name, param) => name + (param.doc ? ` — ${param.doc}` : "");
 const ranged = (param) => param.type !== "bool";  // min and max bound each component
