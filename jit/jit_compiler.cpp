@@ -134,7 +134,15 @@ std::filesystem::path cache_folder(const JitSettings& settings) {
   return {};
 }
 
-void optimize_module(llvm::Module& module, llvm::TargetMachine& machine) {
+llvm::CodeGenOptLevel code_generation_level(Optimization optimization) {
+  return optimization == Optimization::full ? llvm::CodeGenOptLevel::Aggressive : llvm::CodeGenOptLevel::None;
+}
+
+// The quick pipeline: the library inlined (it was optimized when it was
+// built), then only what makes the inlined code straight again.
+constexpr const char* quick_pipeline = "always-inline,globaldce,function(sroa,early-cse,simplifycfg,adce)";
+
+void optimize_module(llvm::Module& module, llvm::TargetMachine& machine, Optimization optimization) {
   llvm::LoopAnalysisManager loops;
   llvm::FunctionAnalysisManager functions;
   llvm::CGSCCAnalysisManager cgscc;
@@ -145,12 +153,18 @@ void optimize_module(llvm::Module& module, llvm::TargetMachine& machine) {
   builder.registerFunctionAnalyses(functions);
   builder.registerLoopAnalyses(loops);
   builder.crossRegisterProxies(loops, functions, cgscc, modules);
-  builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
+  if (optimization == Optimization::full) {
+    builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
+    return;
+  }
+  llvm::ModulePassManager passes;
+  llvm::cantFail(builder.parsePassPipeline(passes, quick_pipeline));
+  passes.run(module, modules);
 }
 
 Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                              const std::string& name, GatherStrategy gathers,
-                                                             llvm::TargetMachine& machine) {
+                                                             llvm::TargetMachine& machine, Optimization optimization) {
   Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
   if (!module) return module.error();
   llvm::Module& m = **module;
@@ -161,7 +175,7 @@ Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, 
     function.addFnAttr("target-cpu", machine.getTargetCPU());
     function.addFnAttr("target-features", machine.getTargetFeatureString());
   }
-  optimize_module(m, machine);
+  optimize_module(m, machine, optimization);
   return module;
 }
 
@@ -237,10 +251,11 @@ class Jit {
     auto elapsed = [&] {
       return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
-    if (settings.cold) {
+    const Optimization optimization = settings.optimization;
+    if (settings.cold || optimization == Optimization::quick) {
       if (cached_only) return compiled({}, CacheHit::none, 0);
-      name += "_cold" + std::to_string(++cold_compiles_);
-      Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers);
+      name += (optimization == Optimization::quick ? "_quick" : "_cold") + std::to_string(++uncached_compiles_);
+      Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers, optimization);
       if (!object) return object.error();
       std::lock_guard lock(mutex_);
       Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
@@ -266,7 +281,7 @@ class Jit {
       }
     }
     if (cached_only) return compiled({}, CacheHit::none, 0);
-    Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers);
+    Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers, optimization);
     if (!object) return object.error();
     if (!folder.empty()) store_object(folder, name, (*object)->getMemBufferRef(), settings.disk_cache_objects);
     std::lock_guard lock(mutex_);
@@ -342,11 +357,12 @@ class Jit {
 
   // The kernel's object file, built on the calling thread.
   Result<std::unique_ptr<llvm::MemoryBuffer>> compile_object(const ShadeIR& ir, int width, const std::string& name,
-                                                             GatherStrategy gathers) const {
-    Result<llvm::TargetMachine*> machine = thread_target_machine(llvm::CodeGenOptLevel::Aggressive);
+                                                             GatherStrategy gathers, Optimization optimization) const {
+    Result<llvm::TargetMachine*> machine = thread_target_machine(code_generation_level(optimization));
     if (!machine) return machine.error();
     llvm::LLVMContext context;
-    Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(ir, width, context, name, gathers, **machine);
+    Result<std::unique_ptr<llvm::Module>> module =
+        build_optimized_module(ir, width, context, name, gathers, **machine, optimization);
     if (!module) return module.error();
     // Instruction selection, scheduling and greedy register allocation grow
     // faster than the kernel: a 4000-instruction graph spent 2 s there. A
@@ -430,7 +446,7 @@ class Jit {
   std::recursive_mutex mutex_;  // recursive: a KernelCode may go while the lock is held
   std::map<std::string, std::weak_ptr<const KernelCode>> resident_;  // every kernel in the JIT, by name
   std::vector<std::shared_ptr<const KernelCode>> recent_;            // the memory cache, most recent first
-  std::atomic<int> cold_compiles_{0};
+  std::atomic<int> uncached_compiles_{0};  // cold and quick: each under a name of its own
 };
 
 }  // namespace
@@ -470,11 +486,11 @@ GatherStrategy host_gather_strategy() {
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();
   Result<std::unique_ptr<llvm::TargetMachine>> machine =
-      Jit::instance().target_machine(llvm::CodeGenOptLevel::Aggressive);
+      Jit::instance().target_machine(code_generation_level(settings.optimization));
   if (!machine) return machine.error();
   llvm::LLVMContext context;
-  Result<std::unique_ptr<llvm::Module>> module =
-      build_optimized_module(ir, width, context, "shade_kernel", effective_gathers(settings), **machine);
+  Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(
+      ir, width, context, "shade_kernel", effective_gathers(settings), **machine, settings.optimization);
   if (!module) return module.error();
   if (listing == Listing::assembly) return assembly(**module, **machine);
   std::string text;

@@ -1,4 +1,5 @@
-// ORC LLJIT for shade kernels: host CPU, full O3 pipeline, and two caches.
+// ORC LLJIT for shade kernels: host CPU, full O3 pipeline (or a quick one),
+// and two caches.
 // In memory, compiled kernels are kept by a hash of the optimized ShadeIR
 // (and width and CPU), so a second compile of the same graph is a lookup;
 // params are passed at call time, so changing one reuses the machine code.
@@ -47,12 +48,22 @@ inline constexpr int memory_cache_kernels = 64;
 // Kernels whose machine code is in the JIT now (cached or in use).
 long resident_kernel_count();
 
+// How hard the JIT works on a kernel. full: LLVM's O3 pipeline and its
+// optimizing code generator, for everything that runs for long. quick: the
+// op library inlined and cleaned up (SROA, CSE, CFG, dead code) and the
+// fast code generator, in about a quarter of the time, for code about 0.7x
+// as fast (docs/architecture.md): an editor's first preview of an edit,
+// until the full kernel is ready (pipeline/tiered_kernel.h). Quick kernels
+// are never cached.
+enum class Optimization { full, quick };
+
 struct JitSettings {
   bool disk_cache = true;
   std::string cache_folder;  // empty: $SHADETREE_CACHE_DIR, else $XDG_CACHE_HOME/shadetree, else ~/.cache/shadetree
   bool cold = false;         // bypass both caches and compile anew (for measurements)
   std::optional<GatherStrategy> gathers;  // empty: the host's best (docs/architecture.md)
   int disk_cache_objects = 4096;  // the folder keeps this many kernels, the most recently used
+  Optimization optimization = Optimization::full;
 };
 
 // The table lookup strategy used when JitSettings::gathers is empty.
@@ -64,7 +75,7 @@ GatherStrategy host_gather_strategy();
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
 
 // The kernel for `ir` if it is in the memory or the disk cache (never with
-// JitSettings::cold); compiles nothing.
+// JitSettings::cold or a quick optimization); compiles nothing.
 std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings = {});
 
 // The name the JIT knows the kernel of `ir` by: equal for two programs

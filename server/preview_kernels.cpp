@@ -50,7 +50,7 @@ Result<PreviewKernel> PreviewKernels::kernel_for(const ShadeIR& ir) {
       return PreviewKernel{make_jit_kernel(ir, *cached), source};
     }
     if (static_cast<int>(compiling_.size()) < background_compiles_) {
-      std::shared_ptr<const TieredKernel> tiered = make_tiered_kernel(ir, 0, settings_);
+      std::shared_ptr<const TieredKernel> tiered = make_tiered_kernel(ir, 0, settings_, true);
       ++compiles_;
       compiling_.push_back({identity, tiered});
       return PreviewKernel{tiered, PreviewKernel::Source::compiling};

@@ -1,16 +1,16 @@
 // The kernel each preview of `shadetree serve` renders with. A program the
 // JIT has compiled (memory or disk cache) runs compiled. A new program, an
 // edit of the graph, starts compiling in the background and renders on the
-// interpreter meanwhile, switching to the JIT between kernel runs once it
-// is ready (pipeline/tiered_kernel.h, the backends agree to the bit): the
-// edit's first preview waits for no compile. Requests for a program whose
-// compile is under way share it. At most `background_compiles` run at once
-// (a graph opened draws a thumbnail per node, each its own program); past
-// that, a new program compiles before it renders. Either way, each program
-// compiles once, when first seen. Volumes too: their march is slower on
-// the interpreter, but it switches to the JIT at its next run, and an
-// edit's first draft came out about as fast as compiling first
-// (bench/editor_latency_benchmark.cpp).
+// interpreter meanwhile, switching between kernel runs to a quick JIT
+// kernel once it is ready and later to the full one (pipeline/
+// tiered_kernel.h, the backends agree to the bit): the edit's first
+// preview waits for no compile. Requests for a program whose compiles are
+// under way share them. At most `background_compiles` programs compile
+// in the background at once (a graph opened draws a thumbnail per node,
+// each its own program); past that, a new program compiles (fully) before
+// it renders. Either way, each program starts compiling once, when first
+// seen. Volumes too: their march is slower on the interpreter, but it
+// switches to the JIT at its next run (bench/editor_latency_benchmark.cpp).
 #pragma once
 
 #include <atomic>

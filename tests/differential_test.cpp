@@ -45,9 +45,12 @@ bool agree(float a, float b) {
 
 // Compares the backends on `ir`; returns "" or the first disagreement.
 std::string compare_backends(const std::string& name, const ShadeIR& ir, const std::vector<float>& params,
-                             int width, std::optional<GatherStrategy> gathers = std::nullopt) {
+                             int width, std::optional<GatherStrategy> gathers = std::nullopt,
+                             Optimization optimization = Optimization::full) {
   auto reference = run(*make_interpreted_kernel(ir), params);
-  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, JitSettings{false, {}, false, gathers});
+  JitSettings settings{false, {}, false, gathers};
+  settings.optimization = optimization;
+  Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width, settings);
   if (!jit) return name + ": JIT failed: " + jit.error().to_string();
   auto compiled = run(**jit, params);
   for (std::size_t plane = 0; plane < reference.size(); ++plane)
@@ -82,6 +85,8 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   for (int width : {4, 8, 16})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
+  EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 0, std::nullopt, Optimization::quick), "")
+      << "quick kernel";
   if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
   for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
                                  GatherStrategy::in_register_byte_permutes})
@@ -248,7 +253,8 @@ TEST(RandomGraphDifferential, HundredsOfRandomGraphsAgree) {
     Result<LoadedGraph> loaded = compile_text(text);
     ASSERT_TRUE(loaded.ok()) << "seed " << seed << ": " << loaded.error().to_string() << "\n" << text;
     const std::string disagreement =
-        compare_backends("random graph " + std::to_string(seed), loaded->ir, loaded->params, seed % 3 == 0 ? 4 : 16);
+        compare_backends("random graph " + std::to_string(seed), loaded->ir, loaded->params, seed % 3 == 0 ? 4 : 16,
+                         std::nullopt, seed % 4 == 1 ? Optimization::quick : Optimization::full);
     EXPECT_EQ(disagreement, "") << text;
     ++compared;
   }

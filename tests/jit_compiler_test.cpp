@@ -243,6 +243,38 @@ TEST(JitCompiler, CachedKernelFindsOnlyWhatWasCompiled) {
   EXPECT_FALSE(cached_kernel(graph->ir, 4, cold).has_value()) << "a cold compile bypasses the caches";
 }
 
+// A quick kernel is the same program with less optimization: it is
+// compiled anew each time, never found in or added to a cache, and its
+// code is the fast code generator's (no full kernel comes of it).
+TEST(JitCompiler, QuickKernelsAreCompiledAnewAndNeverCached) {
+  Result<LoadedGraph> graph = constant_graph(350.0f);
+  ASSERT_TRUE(graph.ok());
+  JitSettings quick = memory_only();
+  quick.optimization = Optimization::quick;
+  Result<CompiledKernel> first = compile_kernel(graph->ir, 4, quick);
+  ASSERT_TRUE(first.ok()) << first.error().to_string();
+  Result<CompiledKernel> second = compile_kernel(graph->ir, 4, quick);
+  ASSERT_TRUE(second.ok());
+  EXPECT_EQ(first->cache, CacheHit::none);
+  EXPECT_EQ(second->cache, CacheHit::none);
+  EXPECT_NE(first->code, second->code);
+  EXPECT_FLOAT_EQ(red_of(*make_jit_kernel(graph->ir, *first)), 350.0f);
+  EXPECT_FALSE(cached_kernel(graph->ir, 4, quick).has_value());
+  EXPECT_FALSE(cached_kernel(graph->ir, 4, memory_only()).has_value()) << "a quick compile leaves no full kernel";
+}
+
+// The quick pipeline still inlines the op library and keeps vectors.
+TEST(JitCompiler, QuickListingsInlineTheLibrary) {
+  Result<LoadedGraph> loaded = compile_graph_text(noise_graph, "noise.json");
+  ASSERT_TRUE(loaded.ok());
+  JitSettings quick;
+  quick.optimization = Optimization::quick;
+  Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir, quick);
+  ASSERT_TRUE(ir.ok()) << ir.error().to_string();
+  EXPECT_NE(ir->find("fmul <8 x float>"), std::string::npos);
+  EXPECT_EQ(ir->find("@st_"), std::string::npos) << "the op library should be inlined";
+}
+
 // Compiles run outside the JIT's lock: threads compiling the same program
 // at once all get one working kernel, and different programs all compile.
 TEST(JitCompiler, ThreadsCompileInParallel) {

@@ -48,8 +48,9 @@ TEST(PreviewKernels, ANewProgramRunsWhileItCompilesThenRunsCompiled) {
   EXPECT_FLOAT_EQ(red_of(*first->kernel), 0.5f);
   Result<PreviewKernel> again = kernels.kernel_for(program);
   ASSERT_TRUE(again.ok());
-  if (again->source == PreviewKernel::Source::compiling)
+  if (again->source == PreviewKernel::Source::compiling) {
     EXPECT_EQ(again->kernel, first->kernel) << "a request during the compile shares it";
+  }
   wait_for_compiles(kernels);
   Result<PreviewKernel> compiled = kernels.kernel_for(program);
   ASSERT_TRUE(compiled.ok());
