@@ -9,14 +9,16 @@
 //   editor_graph_edit_cold/G       graph G edited and recompiled cold (the
 //                                  JIT's caches bypassed), as the page draws
 //                                  it first: 256x256, volumes as a draft at a
-//                                  coarser step, 128x128 or (when opening
-//                                  took over 150 ms) 64x64 (the page refines
-//                                  both when the user pauses). It renders on
-//                                  the interpreter while the JIT compiles in
-//                                  the background, then on the JIT
-//                                  (server/preview_kernels.h); kernel_ms is
-//                                  the part spent from the graph's text to a
-//                                  kernel that runs
+//                                  coarser step and at the side the page
+//                                  picks from the time opening took (128,
+//                                  64, or down to 32 for the slowest; the
+//                                  page refines it when the user pauses). It renders on the interpreter
+//                                  while the JIT compiles in the background,
+//                                  then on a quick JIT kernel and on the
+//                                  full one (server/preview_kernels.h);
+//                                  kernel_ms is the part spent from the
+//                                  graph's text to a kernel that runs,
+//                                  opening_ms what opening took
 // Run
 //   build/shadetree_bench --benchmark_filter=editor_ --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -24,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -130,15 +133,20 @@ void editor_graph_edit_cold(benchmark::State& state, const std::string& name) {
   const bool volume = graph.value("kind", "texture") == "volume";
   const std::string body = graph.dump();
   // Opening the graph draws it at 256x256 and reads its images and meshes;
-  // an edit finds them read. The page draws a volume's edit at half that
-  // size, or a quarter when the opening took over 150 ms (previewSide()
-  // in editor/editor.js).
+  // an edit finds them read. The page draws a volume's first edit as a
+  // draft of half that side, a quarter when opening took over 150 ms, and
+  // smaller (down to 32) where the draft's budget of 30 ms, judged by the
+  // opening's time over 6, calls for it (previewSide() in editor/editor.js).
   const auto opening = std::chrono::steady_clock::now();
   if (!preview(state, served(true), name, body, 256, "compiling")) return;
   const double opening_milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - opening).count();
-  const int side = !volume ? 256 : opening_milliseconds > 150 ? 64 : 128;
+  const double draft_ms_per_pixel = opening_milliseconds / (256.0 * 256.0) / 6.0;
+  const int largest = opening_milliseconds > 150 ? 64 : 128;
+  const int side =
+      !volume ? 256 : std::clamp(16 * static_cast<int>(std::sqrt(30.0 / draft_ms_per_pixel) / 16), 32, largest);
   state.counters["side"] = side;
+  state.counters["opening_ms"] = opening_milliseconds;
   double compile_milliseconds = 0;
   for (auto _ : state) {
     state.PauseTiming();

@@ -18,6 +18,14 @@ const previewSize = 256;
 // How long after the last interactive edit a volume preview is refined to
 // full size; until then it renders at a fraction of it.
 const refineDelayMs = 250;
+// A volume's draft is half the full side, or a quarter when the full
+// preview takes over 150 ms, and smaller still (down to 32, in steps of
+// 16) where that would take longer than this: judged by what its last
+// draft cost per pixel or, before it has one, its full preview over
+// draftSaving (drafts march at 4x the step, server/editor_server.h: 5.5
+// to 11 times cheaper per pixel on the gallery).
+const draftBudgetMs = 30;
+const draftSaving = 6;
 const framesPerSecond = 24;  // nodes/globals.h: time = frame / 24
 
 const state = {
@@ -32,7 +40,9 @@ const state = {
   playing: false,
   lastInteraction: -Infinity,
   fullPreviewMs: 0,     // how long the last full-size preview took
+  draftMsPerPixel: null, // what the last draft of this graph took per pixel
   drawnKey: null,       // what the preview shows: size, frame and the document sent
+  drawnSide: null,      // and its side
   savedText: null,      // the document as last opened or saved
   lastExport: null,     // {url, name, type, size} of the last exported image
 };
@@ -244,13 +254,17 @@ function scheduleUpdate({ interactive = false } = {}) {
 }
 
 // Volume previews are slow: just after an edit, or while an animation
-// plays, they render at 1/2 or 1/4 of the size (1/4 when the full one is
-// slow), as drafts marched at a coarser step (server/editor_server.h).
+// plays, they render smaller, as drafts marched at a coarser step. On a
+// pause they are refined step by step: a small draft doubles up to the
+// largest draft, then the preview is drawn at full size and step.
 function previewSide() {
-  const coarse = state.doc.kind === "volume" &&
-                 (state.playing || performance.now() - state.lastInteraction < refineDelayMs);
-  if (!coarse) return previewSize;
-  return state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
+  if (state.doc.kind !== "volume") return previewSize;
+  const largest = state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
+  if (!state.playing && performance.now() - state.lastInteraction >= refineDelayMs)
+    return state.drawnSide && state.drawnSide < largest ? Math.min(2 * state.drawnSide, largest) : previewSize;
+  const msPerPixel = state.draftMsPerPixel ?? state.fullPreviewMs / (previewSize * previewSize) / draftSaving;
+  const side = 16 * Math.floor(Math.sqrt(draftBudgetMs / msPerPixel) / 16);
+  return Math.min(Math.max(side, 32), largest);
 }
 
 async function update() {
@@ -298,7 +312,8 @@ async function update() {
   if (state.playing) {
     nextFrame();
   } else if (side < previewSize) {
-    refine = setTimeout(() => scheduleUpdate(), refineDelayMs);
+    const paused = performance.now() - state.lastInteraction;
+    refine = setTimeout(() => scheduleUpdate(), Math.max(0, refineDelayMs - paused));
   } else {
     refreshThumbnails(doc, previewBody);
   }
@@ -327,8 +342,11 @@ async function requestPreview(body, side, key) {
     if (id < previewDrawn) return false;
     previewDrawn = id;
     state.drawnKey = key;
+    state.drawnSide = side;
     drawPreview(image);
-    if (side === previewSize) state.fullPreviewMs = performance.now() - started;
+    const took = performance.now() - started;
+    if (side === previewSize) state.fullPreviewMs = took;
+    else state.draftMsPerPixel = took / (side * side);
     state.previews += 1;
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (kernel: ${response.headers.get("X-Kernel")})` +
@@ -464,6 +482,8 @@ async function open(path) {
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
+  state.drawnSide = null;
+  state.draftMsPerPixel = null;
   state.lastError = null;
   graphView.positions.clear();
   thumbnails.cancel();

@@ -384,6 +384,16 @@ TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   EXPECT_GT(results[1]["jit_sps_1t"].get<double>(), 0.0);
 }
 
+// Quick kernels are never cached, so they have no cached compile time.
+TEST_F(Cli, BenchMeasuresQuickKernels) {
+  const CommandResult run = shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --quick");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto result = nlohmann::json::parse(run.out)[0];
+  EXPECT_TRUE(result["compile_ms_cached"].is_null());
+  EXPECT_GT(result["compile_ms_cold"].get<double>(), 0.0);
+  EXPECT_GT(result["jit_sps_1t"].get<double>(), 0.0);
+}
+
 TEST_F(Cli, BenchMarchesVolumeGraphs) {
   const CommandResult run =
       shadetree("bench " + gallery + "noisy_sphere.json --size 16x16 --repetitions 1 --threads 2 --json");

@@ -11,7 +11,8 @@
 // node and undo the move; in the params panel, change a range (no
 // compile), rename a param, add one and delete it, and see a delete of a
 // param in use refused; and the curve the curve editor draws agrees with
-// the server's spline, Catmull-Rom and linear.
+// the server's spline, Catmull-Rom and linear; a volume's slider drag
+// draws drafts, refined to the full size on a pause.
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
 import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -335,6 +336,23 @@ try {
   const variantDoc = JSON.parse(readFileSync(join(folder, "marble_variant.json"), "utf8"));
   assert.equal(JSON.stringify(variantDoc.functions.marble_color.nodes.find((n) => n.id === "ramp").knots), knotsDragged);
   console.log("saved as marble_variant.json: shadetree check accepts it, with the dragged knot");
+
+  // A volume: a slider drag draws drafts, smaller than the full preview,
+  // and a pause refines them to the full size.
+  copyFileSync(join(source, "graphs", "fireball.json"), join(folder, "fireball.json"));
+  await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
+  const volumeSlider = await page.$('input[name="scale"]');
+  const volumeBox = await volumeSlider.boundingBox();
+  await page.mouse.move(volumeBox.x + 2, volumeBox.y + volumeBox.height / 2);
+  await page.mouse.down();
+  for (let step = 1; step <= 6; ++step) await page.mouse.move(volumeBox.x + step * 4, volumeBox.y + volumeBox.height / 2);
+  await page.mouse.up();
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: 10000, polling: 5 });
+  const draftSide = await page.evaluate(() => window.shadetreeEditor.state.drawnSide);
+  assert.match(await page.evaluate(() => document.getElementById("preview-info").textContent), /refining/);
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
+  console.log(`fireball.json: a slider drag drew a ${draftSide}x${draftSide} draft, refined to 256x256 on the pause`);
 
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
