@@ -78,6 +78,14 @@ try {
       return [box.left + x, box.top + y];
     }, id);
   };
+  // Drags param `name`'s slider with the mouse, 3 pixels a step.
+  const dragSlider = async (name, steps) => {
+    const box = await (await page.$(`input[name="${name}"]`)).boundingBox();
+    await page.mouse.move(box.x + 2, box.y + box.height / 2);
+    await page.mouse.down();
+    for (let step = 1; step <= steps; ++step) await page.mouse.move(box.x + 2 + step * 3, box.y + box.height / 2);
+    await page.mouse.up();
+  };
   const pressKeys = async (...keys) => {
     for (const key of keys) await page.keyboard.down(key);
     for (const key of keys.reverse()) await page.keyboard.up(key);
@@ -101,12 +109,7 @@ try {
   // Drag the "scale" slider with the mouse.
   const compilesBefore = (await stats()).compiles;
   const previewsBefore = await page.evaluate(() => window.shadetreeEditor.state.previews);
-  const slider = await page.$('input[name="scale"]');
-  const box = await slider.boundingBox();
-  await page.mouse.move(box.x + 2, box.y + box.height / 2);
-  await page.mouse.down();
-  for (let step = 1; step <= 10; ++step) await page.mouse.move(box.x + step * 3, box.y + box.height / 2);
-  await page.mouse.up();
+  await dragSlider("scale", 10);
   await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBefore);
   await new Promise((resolve) => setTimeout(resolve, 300));
   assert.notEqual(await previewPixels(), before, "the preview changed");
@@ -342,12 +345,7 @@ try {
   copyFileSync(join(source, "graphs", "fireball.json"), join(folder, "fireball.json"));
   await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
-  const volumeSlider = await page.$('input[name="scale"]');
-  const volumeBox = await volumeSlider.boundingBox();
-  await page.mouse.move(volumeBox.x + 2, volumeBox.y + volumeBox.height / 2);
-  await page.mouse.down();
-  for (let step = 1; step <= 6; ++step) await page.mouse.move(volumeBox.x + step * 4, volumeBox.y + volumeBox.height / 2);
-  await page.mouse.up();
+  await dragSlider("scale", 6);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: 10000, polling: 5 });
   const draftSide = await page.evaluate(() => window.shadetreeEditor.state.drawnSide);
   assert.match(await page.evaluate(() => document.getElementById("preview-info").textContent), /refining/);
