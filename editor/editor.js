@@ -22,7 +22,7 @@ const refineDelayMs = 250;
 // preview takes over 150 ms, and smaller still (down to 32, in steps of
 // 16) where that would take longer than this: judged by what its last
 // draft cost per pixel or, before it has one, its full preview over
-// draftSaving (drafts march at 4x the step, server/editor_server.h: 5.5
+// draftSaving (drafts march at 4x the step, render/graph_preview.h: 5.5
 // to 11 times cheaper per pixel on the gallery).
 const draftBudgetMs = 30;
 const draftSaving = 6;
