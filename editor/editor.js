@@ -19,11 +19,12 @@ const previewSize = 256;
 // full size; until then it renders at a fraction of it.
 const refineDelayMs = 250;
 // A volume's draft is half the full side, or a quarter when the full
-// preview takes over 150 ms, and smaller still (down to 32, in steps of
-// 16) where that would take longer than this: judged by what its last
-// draft cost per pixel or, before it has one, its full preview over
-// draftSaving (drafts march at 4x the step, render/graph_preview.h: 5.5
-// to 11 times cheaper per pixel on the gallery).
+// preview takes over 150 ms (or has not been drawn yet), and smaller still
+// (down to 32, in steps of 16) where that would take longer than this:
+// judged by what its last draft on a compiled kernel cost per pixel or,
+// before it has one, its full preview over draftSaving (drafts march at
+// 4x the step, render/graph_preview.h: 5.5 to 11 times cheaper per pixel
+// on the gallery).
 const draftBudgetMs = 30;
 const draftSaving = 6;
 const framesPerSecond = 24;  // nodes/globals.h: time = frame / 24
@@ -39,7 +40,7 @@ const state = {
   frame: 0,             // sent with previews of graphs that use frame or time
   playing: false,
   lastInteraction: -Infinity,
-  fullPreviewMs: 0,     // how long the last full-size preview took
+  fullPreviewMs: null,  // how long the last full-size preview of this graph took
   draftMsPerPixel: null, // what the last draft of this graph took per pixel
   drawnKey: null,       // what the preview shows: size, frame and the document sent
   drawnSide: null,      // and its side
@@ -253,16 +254,18 @@ function scheduleUpdate({ interactive = false } = {}) {
   pending = setTimeout(update, 15);
 }
 
-// Volume previews are slow: just after an edit, or while an animation
-// plays, they render smaller, as drafts marched at a coarser step. On a
-// pause they are refined step by step: a small draft doubles up to the
-// largest draft, then the preview is drawn at full size and step.
+// Volume previews are slow: a graph's first picture, the pictures just
+// after an edit and those of a playing animation are drafts, smaller and
+// marched at a coarser step. On a pause they are refined step by step: a
+// small draft doubles up to the largest draft, then the preview is drawn
+// at full size and step.
 function previewSide() {
   if (state.doc.kind !== "volume") return previewSize;
-  const largest = state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
-  if (!state.playing && performance.now() - state.lastInteraction >= refineDelayMs)
-    return state.drawnSide && state.drawnSide < largest ? Math.min(2 * state.drawnSide, largest) : previewSize;
-  const msPerPixel = state.draftMsPerPixel ?? state.fullPreviewMs / (previewSize * previewSize) / draftSaving;
+  const largest = state.fullPreviewMs === null || state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
+  const paused = !state.playing && performance.now() - state.lastInteraction >= refineDelayMs;
+  if (paused && state.drawnSide !== null)
+    return state.drawnSide < largest ? Math.min(2 * state.drawnSide, largest) : previewSize;
+  const msPerPixel = state.draftMsPerPixel ?? (state.fullPreviewMs ?? 0) / (previewSize * previewSize) / draftSaving;
   const side = 16 * Math.floor(Math.sqrt(draftBudgetMs / msPerPixel) / 16);
   return Math.min(Math.max(side, 32), largest);
 }
@@ -345,8 +348,9 @@ async function requestPreview(body, side, key) {
     state.drawnSide = side;
     drawPreview(image);
     const took = performance.now() - started;
+    // A draft that waited for a compile says little of the next one.
     if (side === previewSize) state.fullPreviewMs = took;
-    else state.draftMsPerPixel = took / (side * side);
+    else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / (side * side);
     state.previews += 1;
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (kernel: ${response.headers.get("X-Kernel")})` +
@@ -483,6 +487,7 @@ async function open(path) {
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
   state.drawnSide = null;
+  state.fullPreviewMs = null;
   state.draftMsPerPixel = null;
   state.lastError = null;
   graphView.positions.clear();

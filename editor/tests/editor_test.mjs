@@ -11,8 +11,9 @@
 // node and undo the move; in the params panel, change a range (no
 // compile), rename a param, add one and delete it, and see a delete of a
 // param in use refused; and the curve the curve editor draws agrees with
-// the server's spline, Catmull-Rom and linear; a volume's slider drag
-// draws drafts, refined to the full size on a pause.
+// the server's spline, Catmull-Rom and linear; a volume opens as a draft
+// refined to the full size, and its slider drag draws drafts, refined on
+// a pause.
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
 import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -340,11 +341,14 @@ try {
   assert.equal(JSON.stringify(variantDoc.functions.marble_color.nodes.find((n) => n.id === "ramp").knots), knotsDragged);
   console.log("saved as marble_variant.json: shadetree check accepts it, with the dragged knot");
 
-  // A volume: a slider drag draws drafts, smaller than the full preview,
-  // and a pause refines them to the full size.
+  // A volume: its first picture is a draft, refined to the full size; a
+  // slider drag draws drafts, and a pause refines them too.
   copyFileSync(join(source, "graphs", "fireball.json"), join(folder, "fireball.json"));
+  const previewsBeforeVolume = await page.evaluate(() => window.shadetreeEditor.state.previews);
   await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
+  assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeVolume + 2,
+            "opening draws a draft, then the full preview");
   await dragSlider("scale", 6);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: 10000, polling: 5 });
   const draftSide = await page.evaluate(() => window.shadetreeEditor.state.drawnSide);
