@@ -12,7 +12,8 @@
 //                                  coarser step and at the side the page
 //                                  picks from the time opening took (128,
 //                                  64, or down to 32 for the slowest; the
-//                                  page refines it when the user pauses). It renders on the interpreter
+//                                  page refines it when the user pauses).
+//                                  It renders on the interpreter
 //                                  while the JIT compiles in the background,
 //                                  then on a quick JIT kernel and on the
 //                                  full one (server/preview_kernels.h);
@@ -128,25 +129,31 @@ void drag_param(benchmark::State& state, const std::string& name, const std::str
 void editor_param_change(benchmark::State& state) { drag_param(state, "marble", "scale", 256); }
 void editor_volume_drag(benchmark::State& state) { drag_param(state, "fireball", "scale", 128); }
 
+// The side of a volume's first draft after an edit, as previewSide() in
+// editor/editor.js picks it from the full preview's time: half the full
+// side, a quarter when that took over 150 ms, and smaller (down to 32, in
+// steps of 16) where the draft's budget, judged by that time over the
+// drafts' saving per pixel, calls for it.
+int first_draft_side(double full_preview_milliseconds) {
+  constexpr int full_side = 256;
+  constexpr double draft_budget_milliseconds = 30.0, draft_saving = 6.0;
+  const int largest = full_preview_milliseconds > 150 ? full_side / 4 : full_side / 2;
+  const double draft_ms_per_pixel = full_preview_milliseconds / (full_side * full_side) / draft_saving;
+  return std::clamp(16 * static_cast<int>(std::sqrt(draft_budget_milliseconds / draft_ms_per_pixel) / 16), 32, largest);
+}
+
 void editor_graph_edit_cold(benchmark::State& state, const std::string& name) {
   const nlohmann::json graph = gallery_graph(name);
   const bool volume = graph.value("kind", "texture") == "volume";
   const std::string body = graph.dump();
   // Opening the graph draws it at 256x256 (a volume after a 64x64 draft)
-  // and reads its images and meshes; an edit finds them read. The page
-  // draws a volume's first edit as a draft of half that side, a quarter
-  // when the full opening preview took over 150 ms, and smaller (down to
-  // 32) where the draft's budget of 30 ms, judged by that preview's time
-  // over 6, calls for it (previewSide() in editor/editor.js).
+  // and reads its images and meshes; an edit finds them read.
   if (volume && !preview(state, served(true), name, body, 64, "compiling", nullptr, true)) return;
   const auto opening = std::chrono::steady_clock::now();
   if (!preview(state, served(true), name, body, 256, "compiling")) return;
   const double opening_milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - opening).count();
-  const double draft_ms_per_pixel = opening_milliseconds / (256.0 * 256.0) / 6.0;
-  const int largest = opening_milliseconds > 150 ? 64 : 128;
-  const int side =
-      !volume ? 256 : std::clamp(16 * static_cast<int>(std::sqrt(30.0 / draft_ms_per_pixel) / 16), 32, largest);
+  const int side = volume ? first_draft_side(opening_milliseconds) : 256;
   state.counters["side"] = side;
   state.counters["opening_ms"] = opening_milliseconds;
   double compile_milliseconds = 0;
