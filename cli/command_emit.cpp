@@ -11,6 +11,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cppgen/emit_cpp.h"
+#include "graph/generated_names.h"
 #include "pipeline/compile_graph.h"
 #include "render/output_file.h"
 #include "render/graph_files.h"
@@ -36,10 +37,10 @@ std::string kernel_name(const EmitArguments& arguments, const Graph& graph) {
 }
 
 ExitStatus emit_cpp_file(const EmitArguments& arguments, const LoadedGraph& loaded) {
-  if (!arguments.name.empty() && c_identifier(arguments.name) != arguments.name)
+  if (!arguments.name.empty() && code_identifier(arguments.name) != arguments.name)
     return report(Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                             "--name must be a C identifier (letters, digits and _, not a keyword), got \"" +
-                                 arguments.name + "\""});
+                             "--name must be an identifier (ASCII letters, digits and single _ inside, not a keyword "
+                             "or an all-capitals name), got " + quoted_text(arguments.name)});
   Result<std::string> source = emit_cpp(*loaded.graph, loaded.ir, loaded.params, kernel_name(arguments, *loaded.graph));
   if (!source) return report(source.error());
   if (arguments.output.empty()) {

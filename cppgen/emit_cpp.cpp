@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "cppgen/library_source.h"
+#include "graph/generated_names.h"
 #include "nodes/globals.h"
 #include "nodes/noise_tables.h"
 #include "nodes/output_contract.h"
@@ -53,11 +55,17 @@ std::string c_type(Type type) {
   }
 }
 
+// The op library's source is written between these lines.
+constexpr const char* library_begin = "#ifndef SHADETREE_EMITTED_LIBRARY";
+constexpr const char* library_end = "#endif  // SHADETREE_EMITTED_LIBRARY";
+
 // The pieces the emitter writes, for one program.
 class CppEmitter {
  public:
   CppEmitter(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block, std::string name)
       : graph_(graph), ir_(ir), param_block_(param_block), name_(std::move(name)) {
+    IdentifierScope fields;
+    for (const IrParam& param : ir_.params) param_fields_[param.name] = fields.add(param.name);
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       if (instr.kind == IrOpKind::global) reads_.insert(static_cast<GlobalId>(instr.immediate[0]));
@@ -90,7 +98,7 @@ class CppEmitter {
  private:
   std::string value_name(std::int32_t value) const {
     const std::string& source = ir_.code[value].source;
-    return "v" + std::to_string(value) + (source.empty() ? "" : "_" + c_identifier(source));
+    return "v" + std::to_string(value) + (source.empty() ? "" : "_" + code_identifier(source));
   }
   // Value v in the code of the block: a register of its own, or, for a
   // uniform value, its splatted copy.
@@ -98,7 +106,7 @@ class CppEmitter {
 
   std::string header() const {
     std::ostringstream out;
-    out << "// " << name_ << ": the kernel of " << (graph_.file.empty() ? "a graph" : graph_.file)
+    out << "// " << name_ << ": the kernel of " << (graph_.file.empty() ? "a graph" : quoted_text(graph_.file))
         << ", written by `shadetree emit --cpp`.\n"
         << "// Standalone C++17 (the standard library only). Its SIMD width follows the target it is\n"
         << "// compiled for (16 lanes with AVX-512, 8 with AVX, 4 with SSE2 or NEON); define\n"
@@ -117,7 +125,7 @@ class CppEmitter {
   // it includes, in a namespace of its own.
   static std::string library() {
     std::ostringstream out;
-    out << "#ifndef SHADETREE_EMITTED_LIBRARY\n#define SHADETREE_EMITTED_LIBRARY\n"
+    out << library_begin << "\n#define SHADETREE_EMITTED_LIBRARY\n"
         << "namespace shadetree_emitted {\n"
         << library_source()
         << "namespace shadetree {\n"
@@ -130,7 +138,7 @@ class CppEmitter {
         << "  Op::evaluate(VectorFrame<F>{{&constants}, arguments, result});\n"
         << "}\n"
         << "}  // namespace shadetree\n"
-        << "}  // namespace shadetree_emitted\n#endif  // SHADETREE_EMITTED_LIBRARY\n";
+        << "}  // namespace shadetree_emitted\n" << library_end << "\n";
     return out.str();
   }
 
@@ -165,15 +173,16 @@ class CppEmitter {
                          : param.type == Type::bool_ ? (value != 0.0f ? "true" : "false")
                                                      : float_literal(value));
       }
-      out << "  " << c_type(param.type) << " " << c_identifier(param.name);
+      out << "  " << c_type(param.type) << " " << param_fields_.at(param.name);
       if (count > 1) out << "[" << count << "]";
       out << " = " << (count > 1 ? "{" : "") << list(values, [](const std::string& v) { return v; })
           << (count > 1 ? "}" : "") << ";  // " << type_name(param.type);
+      if (param_fields_.at(param.name) != param.name) out << " param " << quoted_text(param.name);
       if (const ParamDecl* decl = param_decl(param.name)) {
         if (decl->min || decl->max)
           out << " in [" << (decl->min ? readable(*decl->min) : "-inf") << ", "
               << (decl->max ? readable(*decl->max) : "inf") << "]";
-        if (!decl->doc.empty()) out << ": " << decl->doc;
+        if (!decl->doc.empty()) out << ": " << quoted_text(decl->doc);
       }
       out << "\n";
     }
@@ -278,7 +287,7 @@ class CppEmitter {
       case IrOpKind::extract: text += "component " + std::to_string(instr.immediate[0]); break;
       default: break;
     }
-    if (!instr.source.empty()) text += ", node \"" + instr.source + "\"";
+    if (!instr.source.empty()) text += ", node " + quoted_text(instr.source);
     return text + "\n";
   }
 
@@ -302,7 +311,7 @@ class CppEmitter {
                 instr.immediate[0] < candidate.slot + component_count(candidate.type))
               param = &candidate;
           const int component = instr.immediate[0] - param->slot + c;
-          value = "params." + c_identifier(param->name) +
+          value = "params." + param_fields_.at(param->name) +
                   (component_count(param->type) > 1 ? "[" + std::to_string(component) + "]" : "");
           if (param->type == Type::int_) value = "static_cast<float>(" + value + ")";
           if (param->type == Type::bool_) value = "(" + value + " ? 1.0f : 0.0f)";
@@ -374,7 +383,7 @@ class CppEmitter {
       const IrInstr& instr = ir_.code[i];
       const std::string indent(2 + 2 * depth, ' ');
       if (instr.kind == IrOpKind::begin_region) {
-        out << indent << "// the samples where node \"" << ir_.code[instr.args[0]].source << "\" is "
+        out << indent << "// the samples where node " << quoted_text(ir_.code[instr.args[0]].source) << " is "
             << (instr.immediate[0] == 0 ? "true" : "false") << "\n"
             << indent << "if (lanes::any(" << value_name(instr.args[0]) << "[0] "
             << (instr.immediate[0] == 0 ? "!=" : "==") << " 0.0f)) {\n";
@@ -428,32 +437,22 @@ class CppEmitter {
   const ShadeIR& ir_;
   const std::vector<float>& param_block_;
   std::string name_;
+  std::map<std::string, std::string> param_fields_;  // param name -> its field in NAME_params
   std::set<GlobalId> reads_;
   std::set<std::int32_t> uniform_used_;  // uniform values the block reads
 };
 
 }  // namespace
 
-std::string c_identifier(const std::string& text) {
-  static const std::set<std::string> keywords = {
-      "alignas", "alignof", "and", "asm", "auto", "bool", "break", "case", "catch", "char", "class", "const",
-      "constexpr", "continue", "default", "delete", "do", "double", "else", "enum", "explicit", "export", "extern",
-      "false", "float", "for", "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new",
-      "noexcept", "not", "nullptr", "operator", "or", "private", "protected", "public", "register", "return",
-      "short", "signed", "sizeof", "static", "struct", "switch", "template", "this", "throw", "true", "try",
-      "typedef", "typename", "union", "unsigned", "using", "virtual", "void", "volatile", "while", "xor",
-      "concept", "requires", "co_await", "co_return", "co_yield", "char8_t", "consteval", "constinit"};
-  std::string result;
-  for (char c : text) result += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
-  if (result.empty()) return "kernel";
-  if (std::isdigit(static_cast<unsigned char>(result[0]))) result = "_" + result;
-  if (keywords.count(result)) result += "_";
-  return result;
+std::string emitted_program(const std::string& source) {
+  const std::size_t begin = source.find(library_begin), end = source.find(library_end);
+  if (begin == std::string::npos || end == std::string::npos) return source;
+  return source.substr(0, begin) + source.substr(end + std::strlen(library_end));
 }
 
 Result<std::string> emit_cpp(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
                              const std::string& name) {
-  return CppEmitter(graph, ir, param_block, c_identifier(name)).emit();
+  return CppEmitter(graph, ir, param_block, code_identifier(name, "kernel")).emit();
 }
 
 }  // namespace shadetree

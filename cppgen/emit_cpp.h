@@ -28,14 +28,15 @@ namespace shadetree {
 // naming the node.
 inline constexpr std::size_t max_emitted_data = std::size_t{1} << 20;
 
-// `name` prefixes the emitted types and function: a C identifier.
+// `name` prefixes the emitted types and function (made an identifier by
+// code_identifier, as every name of the graph that the code holds; its
+// node ids, docs and file name appear only in comments, by quoted_text).
 // `param_block` holds the params' values (the emitted defaults).
 Result<std::string> emit_cpp(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
                              const std::string& name);
 
-// A C identifier made of `text`: other characters become '_', a leading
-// digit gets a '_' before it and a C++ keyword one after it. Empty text
-// gives "kernel".
-std::string c_identifier(const std::string& text);
+// The part of an emitted header that is the graph's own (everything but the
+// op library's source, which every header shares): where its names are.
+std::string emitted_program(const std::string& source);
 
 }  // namespace shadetree

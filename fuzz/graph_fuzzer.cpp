@@ -3,7 +3,11 @@
 // after each), then the interpreter on a handful of samples, and for one
 // input in eight that compiles to a small program, the JIT, whose results
 // must equal the interpreter's bit for bit. Every diagnostic must be one
-// line, and runs on an index list must equal dense runs. Built by
+// line, and runs on an index list must equal dense runs. The C++ that
+// emit --cpp writes for it must hold no text of the graph outside quoted
+// comments (for one input in eight): printable ASCII only, and no line
+// continued by a backslash.
+// Built by
 // scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
 #include <cmath>
 #include <cstdio>
@@ -11,6 +15,7 @@
 #include <functional>
 #include <string>
 
+#include "cppgen/emit_cpp.h"
 #include "interp/interpreter.h"
 #include "ir/verify.h"
 #include "jit/jit_kernel.h"
@@ -95,6 +100,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string line = loaded.error().to_string();
     if (line.find('\n') != std::string::npos || line.find('\0') != std::string::npos) fault("diagnostic of several lines");
     return 0;
+  }
+  Result<std::string> source = std::hash<std::string>{}(text) % 8 == 1
+                                   ? emit_cpp(*loaded->graph, loaded->ir, loaded->params, loaded->graph->name)
+                                   : Result<std::string>(invalid_input("not emitted"));
+  if (source) {
+    char previous = '\n';
+    for (char c : emitted_program(*source)) {
+      if (c == '\n' && previous == '\\') fault("emitted C++ continues a line with a backslash");
+      if (c != '\n' && (c < 0x20 || c > 0x7e)) fault("emitted C++ holds a byte that is not printable ASCII");
+      previous = c;
+    }
   }
   static Samples samples;
   const auto reference = run(*make_interpreted_kernel(loaded->ir), loaded->params, samples);

@@ -12,7 +12,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "cppgen/emit_cpp.h"
+#include "graph/generated_names.h"
 #include "interp/interpreter.h"
 #include "support/differential_samples.h"
 #include "support/gallery.h"
@@ -171,7 +174,7 @@ class EmitCpp : public ::testing::Test {
 
 TEST_F(EmitCpp, GalleryAndRandomGraphsAgreeWithTheInterpreter) {
   for (const std::string& path : testing::gallery_graphs())
-    emit(c_identifier(testing::gallery_graph_name(path)), testing::load_gallery_graph(path));
+    emit(code_identifier(testing::gallery_graph_name(path)), testing::load_gallery_graph(path));
   for (std::uint32_t seed = 1; seed <= 24; ++seed)
     emit("random_" + std::to_string(seed), compile_graph_text(testing::RandomGraph(seed).generate(18), "generated.json",
                                                              {}, {}, testing::test_files()));
@@ -197,12 +200,66 @@ TEST(EmitCppLimits, RefusesDataTooLargeToEmitNamingTheNode) {
   EXPECT_NE(source.error().message.find("too many to emit"), std::string::npos) << source.error().message;
 }
 
-TEST(EmitCppNames, CIdentifiersFromAnyText) {
-  EXPECT_EQ(c_identifier("marble"), "marble");
-  EXPECT_EQ(c_identifier("my-graph v2"), "my_graph_v2");
-  EXPECT_EQ(c_identifier("2d"), "_2d");
-  EXPECT_EQ(c_identifier("float"), "float_");
-  EXPECT_EQ(c_identifier(""), "kernel");
+// Names a graph supplies that would be live code, break the header or
+// collide if pasted verbatim (issue 21: a newline in a node id ran the rest
+// of it in the user's program; a doc ending in a backslash spliced the next
+// line into its comment; __LINE__ and quotes broke the header).
+const std::vector<std::string>& hostile_names() {
+  static const std::vector<std::string> names = {
+      "x\nstatic_assert(false, \"node id\");", "x\r\n#error injected", "*/ static_assert(false); /*",
+      "ends in a backslash\\", "\\\nstatic_assert(false);", "\"quoted\"", "__LINE__", "__FILE__", "NULL", "M_PI",
+      "float", "main", "2d", "_Reserved", "a-b", "a_b", "a b", "caf\xc3\xa9 \xe2\x82\xac", "??/", "x??/",
+      "#include <no_such_header>", "x\x01y\x7f", std::string(5000, 'z'), "params", "inputs", "u", "block", "F",
+      "i", "count", "data"};
+  return names;
+}
+
+// A texture graph whose node ids, param names and docs are the hostile
+// names: a chain of adds of each name's param (all different defaults, so
+// a field mixed up with another changes the result), a conditional region
+// under a hostile id, a file name with a line break.
+std::string hostile_graph() {
+  nlohmann::ordered_json params = nlohmann::ordered_json::object(), nodes = nlohmann::ordered_json::array();
+  nodes.push_back({{"id", "p"}, {"op", "P"}});
+  nodes.push_back({{"id", "c"}, {"op", "split"}, {"in", {{"v", "p"}}}});
+  std::string previous = "c.x";
+  float value = 0.125f;
+  for (const std::string& name : hostile_names()) {
+    params[name] = {{"type", "float"}, {"default", value}, {"doc", name}};
+    value *= 1.5f;
+    nodes.push_back({{"id", name}, {"op", "add"}, {"in", {{"a", previous}, {"b", "$" + name}}}});
+    previous = name;
+  }
+  nodes.push_back({{"id", "*/ cond \\"}, {"op", "lt"}, {"in", {{"a", "c.y"}, {"b", 0.5}}}});
+  nodes.push_back({{"id", "\nsin\\"}, {"op", "sin"}, {"in", {{"x", previous}}}});
+  nodes.push_back({{"id", "if\n#error x"}, {"op", "if"}, {"in", {{"cond", "*/ cond \\"}, {"then", "\nsin\\"}, {"else", previous}}}});
+  nodes.push_back({{"id", "rgb"}, {"op", "color"}, {"in", {{"r", "if\n#error x"}, {"g", previous}, {"b", 0.5}}}});
+  return nlohmann::ordered_json{{"format", "shadetree-graph"}, {"version", 1}, {"name", "n\n#error name"},
+                                {"kind", "texture"}, {"doc", "doc\\"}, {"params", params}, {"nodes", nodes},
+                                {"outputs", {{"color", "rgb"}}}}
+      .dump();
+}
+
+TEST_F(EmitCpp, HostileNamesAreNeverLiveCode) {
+  Result<LoadedGraph> loaded = compile_graph_text(hostile_graph(), "dir/evil\n#error file.json", {}, {}, {});
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> source = emit_cpp(*loaded->graph, loaded->ir, loaded->params, "hostile");
+  ASSERT_TRUE(source.ok()) << source.error().to_string();
+  // Every line of the graph's part is printable ASCII, no line ends in a
+  // backslash, and what would be live code is inside a comment.
+  std::istringstream lines(emitted_program(*source));
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    for (char c : line) ASSERT_TRUE(c >= 0x20 && c < 0x7f) << "line " << number << ": " << line;
+    ASSERT_TRUE(line.empty() || line.back() != '\\') << "line " << number << ": " << line;
+    for (const char* live : {"#error", "static_assert(", "#include <no_such"})
+      if (line.find(live) != std::string::npos)
+        EXPECT_LT(line.find("//"), line.find(live)) << "line " << number << " is not a comment: " << line;
+  }
+  emit("hostile", std::move(loaded));
+  compare(SHADETREE_GXX, "");
+  compare(SHADETREE_CLANGXX, "-DSHADETREE_NO_SIMD");
 }
 
 }  // namespace
