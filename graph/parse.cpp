@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "graph/file_path.h"
+#include "graph/json_document.h"
 #include "graph/json_reader.h"
 #include "graph/parse_scene.h"
 #include "graph/parse_volume.h"
@@ -313,30 +315,11 @@ class Parser : JsonReader {
 
 }  // namespace
 
-// Graph files are shallow; deeper nesting is refused while parsing, before
-// it can be built (a deep enough document would overflow the stack).
-constexpr int max_json_depth = 64;
-struct TooDeep {};
-
 Result<Graph> parse_graph(const std::string& json_text, const std::string& file) {
-  json document;
+  Result<json> document = parse_json_document(json_text, file);
+  if (!document) return document.error();
   try {
-    document = json::parse(json_text, [](int depth, json::parse_event_t, json&) {
-      if (depth > max_json_depth) throw TooDeep{};
-      return true;
-    });
-  } catch (const TooDeep&) {
-    return Diagnostic{ExitStatus::invalid_input, file, {}, {},
-                      "JSON nested deeper than " + std::to_string(max_json_depth) + " levels"};
-  } catch (const json::exception& error) {
-    // A syntax error, or a number beyond double range ("1e400").
-    std::string reason = error.what();
-    const auto start = reason.find("] ");
-    if (start != std::string::npos) reason = reason.substr(start + 2);
-    return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "invalid JSON: " + reason};
-  }
-  try {
-    return Parser(file).parse(document);
+    return Parser(file).parse(*document);
   } catch (const ParseError& error) {
     return error.diagnostic;
   } catch (const json::exception& error) {
@@ -345,6 +328,7 @@ Result<Graph> parse_graph(const std::string& json_text, const std::string& file)
 }
 
 Result<Graph> load_graph(const std::string& path) {
+  if (Status text = check_path_text(path, "graph file"); !text) return text.error();
   std::error_code error;
   if (!std::filesystem::exists(path, error))
     return Diagnostic{ExitStatus::invalid_input, path, {}, {}, "no such file"};
