@@ -26,8 +26,9 @@ void add_check_command(CLI::App& app, CommandRunner& run) {
           if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
           continue;
         }
-        std::printf("ok: %s (%s graph \"%s\", %zu instructions)\n", file.c_str(), std::string(graph_kind_name(loaded->graph->kind)).c_str(),
-                    loaded->graph->name.c_str(), loaded->ir.code.size());
+        std::printf("ok: %s (%s graph \"%s\", %zu instructions)\n", printable(file).c_str(),
+                    std::string(graph_kind_name(loaded->graph->kind)).c_str(), printable(loaded->graph->name).c_str(),
+                    loaded->ir.code.size());
       }
       return worst;
     };

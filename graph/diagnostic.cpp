@@ -3,9 +3,18 @@
 namespace shadetree {
 namespace {
 
-// Names and messages echo what the user wrote; a newline in a node id must
-// not split the line, nor a NUL end it.
-std::string escaped(const std::string& text) {
+// A diagnostic echoes what the user wrote, which may be a 4 MB node id:
+// each name and the whole line are cut to these lengths.
+constexpr std::size_t max_name_shown = 200, max_line_shown = 1000;
+
+std::string shortened(const std::string& text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  return text.substr(0, limit) + "... (" + std::to_string(text.size() - limit) + " more bytes)";
+}
+
+}  // namespace
+
+std::string printable(const std::string& text) {
   std::string result;
   for (const char c : text) {
     const auto byte = static_cast<unsigned char>(c);
@@ -27,20 +36,19 @@ std::string escaped(const std::string& text) {
   return result;
 }
 
-}  // namespace
-
 std::string Diagnostic::to_string() const {
   std::string line = "error: ";
-  if (!file.empty()) line += file + ": ";
-  if (!node.empty()) line += "node \"" + node + "\" ";
+  if (!file.empty()) line += shortened(file, max_name_shown) + ": ";
+  if (!node.empty()) line += "node \"" + shortened(node, max_name_shown) + "\" ";
   // Without a node, `input` names what is at fault as it is (output "color").
-  if (!input.empty()) line += node.empty() ? input : "input \"" + input + "\"";
+  if (!input.empty())
+    line += node.empty() ? shortened(input, max_name_shown) : "input \"" + shortened(input, max_name_shown) + "\"";
   if (!node.empty() || !input.empty()) {
     if (line.back() == ' ') line.pop_back();
     line += ": ";
   }
   line += message;
-  return escaped(line);
+  return shortened(printable(line), max_line_shown);
 }
 
 Diagnostic invalid_input(std::string message) {

@@ -28,6 +28,12 @@ struct Diagnostic {
 };
 
 Diagnostic invalid_input(std::string message);
+
+// `text` on one line of a terminal: line breaks, tabs and other control
+// characters escaped (\n, \t, \r, \xNN). Names and messages echo what
+// the user wrote; a newline in a node id must not split the line, nor a
+// NUL end it, nor an escape sequence drive the terminal.
+std::string printable(const std::string& text);
 Diagnostic failure(std::string message);
 
 // A value or the diagnostic that explains why there is none.
