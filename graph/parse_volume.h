@@ -15,8 +15,9 @@ VolumeDesc parse_volume(const JsonReader& reader, const json& volume);
 float march_step(const VolumeDesc& volume);
 float reference_step(const VolumeDesc& volume);
 
-// Why `step` would be refused for `volume`, or empty: it must be positive
-// and cross the bounds' diagonal in at most max_steps_across steps.
-std::string step_problem(const VolumeDesc& volume, float step);
+// Why `step` would be refused for `volume`, or empty: it must be positive,
+// finite and cross the bounds' diagonal in at most max_steps_across steps
+// (the budget of every ray, primary or shadow). `what` names it.
+std::string step_problem(const VolumeDesc& volume, float step, const std::string& what);
 
 }  // namespace shadetree

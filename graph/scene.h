@@ -77,8 +77,13 @@ struct VolumeDesc {
 };
 
 inline constexpr float default_steps_across = 256.0f;
-// Samples along one ray through the whole box (diagonal / step), at most.
+// Samples along one ray through the whole box (diagonal / step), at most:
+// every step a graph or an option sets, the reference step included, is
+// checked against it, so no march of a primary or shadow ray takes more.
 inline constexpr float max_steps_across = 65536.0f;
+// The thinnest bounds (on any axis; graph/parse_volume.cpp).
+inline constexpr float min_volume_extent = 1e-6f;
+inline constexpr float min_volume_relative_extent = 1e-5f;
 
 // What a scene without "lights" is lit by.
 std::vector<LightDesc> default_lights();

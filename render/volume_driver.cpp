@@ -77,6 +77,7 @@ struct ShadowRay {
   glm::vec3 origin{0.0f}, direction{0.0f};
   float t = 0.0f, end = 0.0f;  // the next segment's start; where the ray leaves the box or meets the light
   float transmittance = 1.0f;
+  int segments_left = 0;  // the march's budget: however t rounds, it ends
   std::size_t slot = 0;  // in the step's transmittance list
 };
 
@@ -311,8 +312,10 @@ class Marcher {
   void march_shadows(std::vector<ShadowRay>& rays, std::vector<float>& transmittance, TileScratch& scratch) const {
     const float shadow_step = shadow_step_;
     std::vector<ShadowRay*> live;
-    for (ShadowRay& ray : rays)
+    for (ShadowRay& ray : rays) {
+      ray.segments_left = static_cast<int>(std::min(std::ceil((ray.end - ray.t) / shadow_step), max_steps_across)) + 1;
       if (ray.t < ray.end) live.push_back(&ray);
+    }
     while (!live.empty()) {
       const std::size_t count = live.size();
       for (std::size_t i = 0; i < count; ++i) {
@@ -327,10 +330,12 @@ class Marcher {
         ShadowRay& ray = *live[i];
         ray.transmittance *= 1.0f - segment_alpha(opacity(scratch.shadows, i), std::min(shadow_step, ray.end - ray.t));
         ray.t += shadow_step;
+        --ray.segments_left;
       }
       live.erase(std::remove_if(live.begin(), live.end(),
                                 [&](const ShadowRay* ray) {
-                                  return ray->t >= ray->end || ray->transmittance < options_.termination;
+                                  return ray->t >= ray->end || ray->segments_left <= 0 ||
+                                         ray->transmittance < options_.termination;
                                 }),
                  live.end());
     }
@@ -495,10 +500,10 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   if (layout.kind != GraphKind::volume || !layout.provides(OutputId::density))
     return invalid_input("the ray marcher needs a volume graph with an output \"density\"");
   const float step = options.step != 0.0f ? options.step : march_step(volume);
-  if (std::string problem = step_problem(volume, step); !problem.empty()) return invalid_input(problem);
+  if (std::string problem = step_problem(volume, step, "step"); !problem.empty()) return invalid_input(problem);
   if (options.shadow_step != 0.0f)
-    if (std::string problem = step_problem(volume, options.shadow_step); !problem.empty())
-      return invalid_input("shadow " + problem);
+    if (std::string problem = step_problem(volume, options.shadow_step, "shadow step"); !problem.empty())
+      return invalid_input(problem);
   const float shadow_step = options.shadow_step != 0.0f ? options.shadow_step : reference_step(volume);
   const bool jitter = options.jitter.value_or(volume.jitter);
   const Marcher marcher(kernel, scene, volume, step, reference_step(volume), shadow_step, jitter,
