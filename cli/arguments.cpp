@@ -52,6 +52,16 @@ void add_search_path_option(CLI::App& command, std::vector<std::string>& search_
                      "a folder outside the graph's own from which the graph may read files (repeatable)");
 }
 
+CLI::Option* add_finite_option(CLI::App& command, const std::string& name, std::optional<float>& value,
+                               const std::string& description) {
+  return command.add_option(name, value, description)->check(CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto numbers = parse_number_list(text);
+        return numbers && numbers->size() == 1 ? "" : "expected a finite decimal number, got \"" + text + "\"";
+      },
+      "NUMBER"));
+}
+
 Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const ShadeIR& ir, int width) {
   if (backend == "interp") return make_interpreted_kernel(ir);
   return make_jit_kernel(ir, width);

@@ -15,6 +15,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace shadetree {
@@ -35,6 +36,11 @@ Result<TextureView> texture_view(const Graph& graph, const std::string& size, st
 // --search-path DIR (repeatable): a folder outside the graph's own from
 // which it may read files (meshes, images).
 void add_search_path_option(CLI::App& command, std::vector<std::string>& search_paths);
+
+// An option taking one finite decimal number: nan, inf and hex are refused
+// (exit status 2), as they are in graph files.
+CLI::Option* add_finite_option(CLI::App& command, const std::string& name, std::optional<float>& value,
+                               const std::string& description);
 
 // The kernel of `ir` from the named backend ("jit" or "interp"); width is
 // the JIT's vector width (0: the host's).

@@ -106,7 +106,7 @@ void add_eval_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--size", arguments->size,
                       "image size WIDTHxHEIGHT that sets filter_width as render would (default: the graph's)");
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
-  command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
+  add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
   add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] { run = [arguments] { return evaluate(*arguments); }; });
 }

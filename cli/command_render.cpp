@@ -79,8 +79,8 @@ Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Ker
                       "a volume graph needs render.volume with \"bounds\" to be rendered (a volume must be bounded)"};
   const VolumeDesc volume = *graph.render.volume;
   if (arguments.step)
-    if (std::string problem = step_problem(volume, *arguments.step); !problem.empty())
-      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step: " + problem};
+    if (std::string problem = step_problem(volume, *arguments.step, "--step"); !problem.empty())
+      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, problem};
   const SceneDesc desc = volume_scene(graph.render.scene);
   auto scene = std::make_shared<Result<Scene>>(Scene::build(desc, graph.file, arguments.search_paths));
   if (!*scene) return (*scene).error();
@@ -149,11 +149,11 @@ Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& ke
     });
   }
   if (graph.kind == GraphKind::volume) return volume_frame_renderer(loaded, kernel, arguments);
-  if (!arguments.object.empty() && graph.render.scene)
-    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", arguments.file.c_str(),
-                 arguments.object.c_str());
   auto scene = std::make_shared<Result<Scene>>(surface_scene(graph, arguments));
   if (!*scene) return (*scene).error();
+  if (!arguments.object.empty() && graph.render.scene)
+    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", printable(arguments.file).c_str(),
+                 printable(arguments.object).c_str());
   Result<std::pair<int, int>> size = image_size(graph, arguments.size);
   if (!size) return size.error();
   SurfaceView view;
@@ -282,7 +282,7 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
       ->required();
   command->add_option("--size", arguments->size, "image size WIDTHxHEIGHT (default: the graph's render size)");
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
-  command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
+  add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
   command->add_option("--frames", arguments->frames, "render frames FIRST..LAST as a numbered sequence")
       ->excludes("--frame");
   command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
@@ -300,7 +300,7 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
                       "surface graphs: render on a preview object: sphere, torus, plane, box or a mesh file "
                       "(.obj, .ply) instead of the graph's scene");
   add_search_path_option(*command, arguments->search_paths);
-  command->add_option("--step", arguments->step,
+  add_finite_option(*command, "--step", arguments->step,
                       "volume graphs: the march step in the units of P (default: render.volume.step, else the "
                       "bounds' diagonal / 256)");
   command->add_flag("--jitter", arguments->jitter,

@@ -89,7 +89,7 @@ void add_voxelize_command(CLI::App& app, CommandRunner& run) {
                           std::to_string(max_voxel_resolution) + ")")
       ->check(CLI::Range(1, max_voxel_resolution));
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
-  command->add_option("--frame", arguments->frame, "animation frame (time = frame / 24)");
+  add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
   command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->add_option("--backend", arguments->backend, "backend: jit (default) or interp")

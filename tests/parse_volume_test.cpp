@@ -81,5 +81,38 @@ TEST(ParseVolume, MalformedVolumesGiveOneLineErrors) {
             std::string::npos);
 }
 
+// Issue 21: shadow rays march at the reference step, which was only
+// checked to be positive: 1e-30 never finished (the ray stopped
+// advancing), 1e-6 took 58 times as long. It is bounded as the step is.
+TEST(ParseVolume, ReferenceStepsTooSmallToMarchAreRefused) {
+  for (const char* step : {"1e-30", "1e-6"})
+    EXPECT_NE(error_of(std::string(R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "reference_step": )") +
+                       step + "}}")
+                  .find("reference_step"),
+              std::string::npos)
+        << step;
+  Result<Graph> fine = parse_with_render(R"({"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "reference_step": 0.001}})");
+  EXPECT_TRUE(fine.ok()) << fine.error().to_string();
+}
+
+// Issue 21: bounds 1e-30 across passed check, and render then failed with
+// "step must be positive" naming no file (the diagonal underflowed).
+TEST(ParseVolume, BoundsTooThinForFloatsAreRefusedNamingTheFile) {
+  for (const char* bounds : {R"({"min": [0, 0, 0], "max": [1e-30, 1e-30, 1e-30]})",
+                             R"({"min": [1e6, 0, 0], "max": [1000000.5, 1, 1]})",
+                             R"({"min": [0, 0, 0], "max": [1, 1, 1e-7]})"}) {
+    const std::string text = error_of(std::string(R"({"volume": {"bounds": )") + bounds + "}}");
+    EXPECT_NE(text.find("vol.json: render volume bounds are too thin"), std::string::npos) << text;
+  }
+}
+
+TEST(ParseVolume, StepsMustBeFinite) {
+  VolumeDesc volume;
+  volume.bounds_max = {1.0f, 1.0f, 1.0f};
+  EXPECT_EQ(step_problem(volume, 0.01f, "step"), "");
+  EXPECT_EQ(step_problem(volume, INFINITY, "--step"), "--step must be positive and finite");
+  EXPECT_EQ(step_problem(volume, NAN, "step"), "step must be positive and finite");
+}
+
 }  // namespace
 }  // namespace shadetree
