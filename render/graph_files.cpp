@@ -66,7 +66,11 @@ GraphFiles graph_files(std::vector<std::string> search_paths) {
     return read->grids.get(std::pair{*resolved, resolution}, *resolved, [&]() -> Result<DistanceGrid> {
       Result<TriangleMesh> mesh = load_mesh(*resolved);
       if (!mesh) return mesh.error();
-      return mesh_distance_grid(*mesh, resolution);
+      Result<DistanceGrid> grid = mesh_distance_grid(*mesh, resolution);
+      if (grid) return grid;
+      Diagnostic error = grid.error();
+      error.file = *resolved;
+      return error;
     });
   };
   return files;

@@ -3,19 +3,28 @@
 // mesh_intersector.cpp.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "graph/diagnostic.h"
 #include "render/ray.h"
 
 namespace shadetree {
 
-inline constexpr std::size_t max_mesh_triangles = 20'000'000;
-inline constexpr std::uintmax_t max_mesh_file_bytes = 1ull << 30;
+// Assimp takes about 700 bytes a triangle while it loads a file (10 M
+// triangles took 7 GB): 5 M triangles keep a load near 3.5 GB, well inside
+// a 24 GB machine running two renders. OBJ and PLY files are counted
+// before they are loaded.
+inline constexpr std::size_t max_mesh_triangles = 5'000'000;
+inline constexpr std::uintmax_t max_mesh_file_bytes = 512ull << 20;
 
 struct TriangleMesh {
   std::vector<glm::vec3> positions;
@@ -28,6 +37,27 @@ struct TriangleMesh {
 // (polygons triangulated). Errors name the file: missing, unreadable, not
 // a mesh, no triangles, over the size limits, NaN or infinite coordinates.
 Result<TriangleMesh> load_mesh(const std::string& path);
+
+// The mesh's bounding box, low and high corners.
+inline std::pair<glm::vec3, glm::vec3> mesh_bounds(const TriangleMesh& mesh) {
+  glm::vec3 low = mesh.positions.at(0), high = low;
+  for (const glm::vec3& p : mesh.positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  return {low, high};
+}
+
+// Why a box cannot be scaled to a unit size in 32-bit floats (a mesh of
+// one point, or 1e-30 across: the preview object's rays would start at
+// 1e20, the distance grid's voxels would vanish), or empty. `use` says
+// what it was for.
+inline std::string too_small_to_scale(const glm::vec3& low, const glm::vec3& high, const std::string& use) {
+  const glm::vec3 farthest = glm::max(glm::abs(low), glm::abs(high));
+  const float extent = glm::length(high - low);
+  if (extent >= 1e-5f * std::max({farthest.x, farthest.y, farthest.z, 1.0f})) return {};
+  return "mesh is too small for " + use + ": its bounding box is " + std::to_string(extent) + " across";
+}
 
 // A mesh's BVH, built once; intersect() may be called from any thread.
 class MeshIntersector {

@@ -2,12 +2,16 @@
 // other format Assimp reads loads too. Every mesh of the file is
 // flattened into one triangle list in the file's space.
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "graph/file_path.h"
 #include "render/mesh.h"
 
 namespace shadetree {
@@ -40,18 +44,67 @@ void append(const aiMesh& mesh, const aiMatrix4x4& transform, TriangleMesh& resu
   }
 }
 
+// Assimp opens the files a mesh file names (an OBJ's mtllib, a glTF's
+// buffers) through its IOSystem: this one opens the mesh file alone, so a
+// file cannot make shadetree read /etc/shadow or anything else outside
+// the path policy. Materials are not used; a missing one is not an error.
+class MeshFileOnly : public Assimp::DefaultIOSystem {
+ public:
+  explicit MeshFileOnly(std::string path) : path_(std::move(path)) {}
+  bool Exists(const char* file) const override { return path_ == file && DefaultIOSystem::Exists(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (path_ != file || std::strchr(mode, 'w') || std::strchr(mode, 'a')) return nullptr;
+    return DefaultIOSystem::Open(file, mode);
+  }
+
+ private:
+  std::string path_;
+};
+
+// The triangles an OBJ or PLY file will hold, counted from its text before
+// Assimp builds it (Assimp takes about 700 bytes a triangle while loading),
+// or 0 for other formats, which only the file size bounds.
+std::size_t counted_triangles(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::string line;
+  std::size_t triangles = 0;
+  if (std::getline(file, line) && line.rfind("ply", 0) == 0) {
+    // "element face N" in the header, each face at least one triangle.
+    for (int lines = 0; lines < 10000 && std::getline(file, line) && line.rfind("end_header", 0) != 0; ++lines)
+      if (line.rfind("element face ", 0) == 0) return std::strtoull(line.c_str() + 13, nullptr, 10);
+    return 0;
+  }
+  if (std::filesystem::path(path).extension() != ".obj") return 0;
+  do {
+    // "f a b c d": one triangle per corner past the second.
+    if (line.size() < 2 || line[0] != 'f' || (line[1] != ' ' && line[1] != '\t')) continue;
+    std::size_t corners = 0;
+    for (std::size_t i = 1; i < line.size(); ++i)
+      if ((line[i - 1] == ' ' || line[i - 1] == '\t') && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++corners;
+    if (corners > 2) triangles += corners - 2;
+  } while (std::getline(file, line));
+  return triangles;
+}
+
 }  // namespace
 
 Result<TriangleMesh> load_mesh(const std::string& path) {
+  if (Status text = check_path_text(path, "mesh file"); !text) return text.error();
   std::error_code error;
   if (!std::filesystem::exists(path, error)) return mesh_error(path, ExitStatus::invalid_input, "no such mesh file");
   if (std::filesystem::is_directory(path, error))
     return mesh_error(path, ExitStatus::invalid_input, "is a directory, not a mesh file");
   const std::uintmax_t bytes = std::filesystem::file_size(path, error);
   if (error) return mesh_error(path, ExitStatus::failure, "cannot read mesh file: " + error.message());
-  if (bytes > max_mesh_file_bytes) return mesh_error(path, ExitStatus::invalid_input, "mesh file is larger than 1 GiB");
+  if (bytes > max_mesh_file_bytes)
+    return mesh_error(path, ExitStatus::invalid_input,
+                      "mesh file is larger than " + std::to_string(max_mesh_file_bytes >> 20) + " MiB");
+  if (counted_triangles(path) > max_mesh_triangles)
+    return mesh_error(path, ExitStatus::invalid_input,
+                      "mesh has more than " + std::to_string(max_mesh_triangles) + " triangles");
 
   Assimp::Importer importer;
+  importer.SetIOHandler(new MeshFileOnly(path));  // the importer owns it
   // Only triangles; no points or lines.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType |

@@ -1,5 +1,7 @@
 // Ray/mesh intersection through Embree 3, the CPU ray tracing kernels: one
 // device for the process, one BVH per mesh.
+#include <cmath>
+
 #include <embree3/rtcore.h>
 
 #include <glm/geometric.hpp>
@@ -49,6 +51,14 @@ MeshIntersector::~MeshIntersector() {
 const TriangleMesh& MeshIntersector::mesh() const { return state_->mesh; }
 
 std::optional<SurfaceHit> MeshIntersector::intersect(const Ray& ray, float t_min, float t_max) const {
+  // Embree asserts (and aborts) on a ray whose origin or direction is beyond
+  // about 1.8e18 or not a number, or whose interval is NaN: no such ray
+  // meets anything a mesh file can hold.
+  constexpr float embree_large = 1.8e18f;
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(std::fabs(ray.origin[axis]) <= embree_large) || !(std::fabs(ray.direction[axis]) <= embree_large))
+      return std::nullopt;
+  if (!(t_min <= t_max) || !(t_min >= 0.0f)) return std::nullopt;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit query{};

@@ -49,13 +49,11 @@ Result<SceneDesc> preview_scene(const std::string& object) {
   } else {
     Result<TriangleMesh> mesh = load_mesh(object);
     if (!mesh) return mesh.error();
-    glm::vec3 low = mesh->positions[0], high = mesh->positions[0];
-    for (const glm::vec3& position : mesh->positions) {
-      low = glm::min(low, position);
-      high = glm::max(high, position);
-    }
+    const auto [low, high] = mesh_bounds(*mesh);
+    if (std::string problem = too_small_to_scale(low, high, "a preview object"); !problem.empty())
+      return Diagnostic{ExitStatus::invalid_input, object, {}, {}, problem};
     const glm::vec3 centre = (low + high) * 0.5f;
-    const float radius = std::max(glm::length(high - low) * 0.5f, 1e-20f);
+    const float radius = glm::length(high - low) * 0.5f;
     shape.type = ObjectType::mesh;
     shape.mesh_file = std::filesystem::absolute(object).string();
     shape.transform.scale = {1.0f / radius, 1.0f / radius, 1.0f / radius};

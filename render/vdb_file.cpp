@@ -69,11 +69,8 @@ Result<VoxelGrid> read_vdb(const std::string& path) {
 Result<DistanceGrid> mesh_distance_grid(const TriangleMesh& mesh, int resolution) {
   const VdbModule& module = vdb_module();
   if (!module.error.empty()) return failure(module.error);
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::vec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
+  auto [lo, hi] = mesh_bounds(mesh);
+  if (std::string problem = too_small_to_scale(lo, hi, "a distance grid"); !problem.empty()) return invalid_input(problem);
   const glm::vec3 pad = 0.1f * (hi - lo) + glm::vec3(1e-6f);
   lo -= pad;
   hi += pad;

@@ -173,5 +173,25 @@ TEST_F(ImageFiles, MissingBrokenHugeAndEscapingFilesAreInvalidInput) {
       << read.error().message;
 }
 
+// Issue 21: the limit counted pixels, not channels, so a small file of
+// 1024x1024 pixels and 600 channels was decoded whole (59 s, 5 GB).
+TEST_F(ImageFiles, ChannelsCountAgainstTheLimitAndOnlyRgbaIsKept) {
+  Image wide{32, 32, 40, std::vector<float>(32 * 32 * 40, 0.25f)};
+  for (int i = 0; i < 32 * 32; ++i) wide.pixels[static_cast<std::size_t>(i) * 40 + 3] = 0.75f;
+  const std::string path = (folder_ / "graphs" / "wide.exr").string();
+  ASSERT_TRUE(write_image(wide, path).ok());
+  Result<Image> refused = read_image(path, 32 * 32 * 4);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("32x32 pixels of 40 channels, more values than 4096 RGBA pixels hold"),
+            std::string::npos)
+      << refused.error().message;
+  Result<Image> read = read_image(path, 32 * 32 * 10);
+  ASSERT_TRUE(read.ok()) << read.error().to_string();
+  EXPECT_EQ(read->channels, 4);
+  ASSERT_EQ(read->pixels.size(), 32u * 32u * 4u);
+  EXPECT_EQ(read->pixels[2], 0.25f);
+  EXPECT_EQ(read->pixels[3], 0.75f);
+}
+
 }  // namespace
 }  // namespace shadetree

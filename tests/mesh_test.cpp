@@ -5,11 +5,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/inotify.h>
 #include <unistd.h>
 
 #include <glm/geometric.hpp>
 
 #include "render/mesh.h"
+#include "render/preview_scene.h"
+#include "render/vdb_file.h"
 #include "support/cube_mesh.h"
 
 namespace shadetree {
@@ -91,6 +94,70 @@ TEST_F(MeshFiles, BadFilesGiveOneLineErrorsNamingTheFile) {
     EXPECT_EQ(mesh.error().to_string().find('\n'), std::string::npos);
     EXPECT_NE(mesh.error().to_string().find(path), std::string::npos) << mesh.error().to_string();
   }
+}
+
+// Issue 21: an OBJ's mtllib made Assimp open any path (/etc/shadow was
+// opened). inotify sees every open of the material file; there is none,
+// and the mesh still loads without its materials.
+TEST_F(MeshFiles, MaterialFilesAnObjNamesAreNeverOpened) {
+  fs::create_directories(folder_ / "elsewhere");
+  const std::string material = write("elsewhere/secret.mtl", "newmtl stolen\nKd 1 0 0\n");
+  const std::string obj = write("named.obj", "mtllib " + material + "\nmtllib elsewhere/secret.mtl\nusemtl stolen\n" +
+                                                 testing::cube_obj(1.0f));
+  const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  ASSERT_GE(watch, 0);
+  ASSERT_GE(::inotify_add_watch(watch, material.c_str(), IN_OPEN | IN_ACCESS), 0);
+  Result<TriangleMesh> mesh = load_mesh(obj);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
+  EXPECT_EQ(mesh->indices.size(), 36u);
+  char events[4096];
+  EXPECT_LT(::read(watch, events, sizeof events), 0) << "the material file was opened";
+  ::close(watch);
+}
+
+// Counted from the header before Assimp builds anything (10 M triangles
+// took it 7 GB).
+TEST_F(MeshFiles, TooManyTrianglesAreRefusedBeforeLoading) {
+  const std::string ply = write("huge.ply",
+                                "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                "property float y\nproperty float z\nelement face 6000000\n"
+                                "property list uchar int vertex_indices\nend_header\n");
+  expect_error_naming(load_mesh(ply), "huge.ply", "more than 5000000 triangles");
+  // One polygon of 5000003 corners: a fan of 5000001 triangles.
+  std::string faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+  for (int i = 0; i < 5000003; ++i) faces += " 1";
+  faces += "\n";
+  expect_error_naming(load_mesh(write("fans.obj", faces)), "fans.obj", "more than 5000000 triangles");
+}
+
+// Issue 21: a mesh of one point given as --object aborted inside Embree
+// (its rays, scaled to the mesh, started at 1e20); in a distance grid it
+// failed with exit status 1, not 2.
+TEST_F(MeshFiles, MeshesOfOnePointAreRefusedAsPreviewObjectsAndDistanceGrids) {
+  const std::string point = write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
+  Result<SceneDesc> scene = preview_scene(point);
+  ASSERT_FALSE(scene.ok());
+  EXPECT_EQ(scene.error().status, ExitStatus::invalid_input);
+  EXPECT_NE(scene.error().to_string().find("mesh is too small for a preview object"), std::string::npos)
+      << scene.error().to_string();
+  const std::string tiny = write("tiny.obj", "v 0 0 0\nv 1e-30 0 0\nv 0 1e-30 0\nf 1 2 3\n");
+  Result<TriangleMesh> mesh = load_mesh(tiny);
+  ASSERT_TRUE(mesh.ok()) << mesh.error().to_string();
+  EXPECT_FALSE(preview_scene(tiny).ok());
+  Result<DistanceGrid> grid = mesh_distance_grid(*mesh, 16);
+  ASSERT_FALSE(grid.ok());
+  EXPECT_EQ(grid.error().status, ExitStatus::invalid_input);
+  EXPECT_NE(grid.error().message.find("mesh is too small for a distance grid"), std::string::npos);
+}
+
+TEST_F(MeshFiles, RaysEmbreeWouldAssertOnMissInstead) {
+  Result<TriangleMesh> mesh = load_mesh(write("cube.obj", testing::cube_obj(1.0f)));
+  ASSERT_TRUE(mesh.ok());
+  const MeshIntersector intersector(std::move(*mesh));
+  EXPECT_FALSE(intersector.intersect(Ray{glm::vec3(1e20f, 0.0f, 0.0f), glm::vec3(-1.0f, 0.0f, 0.0f)}, 0.0f, 1e30f));
+  EXPECT_FALSE(intersector.intersect(Ray{glm::vec3(NAN, 0.0f, 0.0f), glm::vec3(-1.0f, 0.0f, 0.0f)}, 0.0f, 10.0f));
+  EXPECT_FALSE(intersector.intersect(Ray{glm::vec3(5.0f, 0.0f, 0.0f), glm::vec3(-1.0f, 0.0f, 0.0f)}, NAN, 10.0f));
+  EXPECT_TRUE(intersector.intersect(Ray{glm::vec3(5.0f, 0.0f, 0.0f), glm::vec3(-1.0f, 0.0f, 0.0f)}, 0.0f, 10.0f));
 }
 
 TEST_F(MeshFiles, CubeHitsFromEachAxisGiveTheClosedFormAndTheOutwardNormal) {
