@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <mutex>
 #include <string>
 
@@ -56,6 +57,24 @@ class StderrMuted {
   int saved_ = -1;
 };
 
+// OpenEXR files carry the time they were written (OpenImageIO's DateTime,
+// EXR's capDate), so identical renders differ in bytes. With
+// SOURCE_DATE_EPOCH set (the reproducible-builds convention: seconds since
+// 1970), that time is written instead; "" when it is unset or malformed.
+std::string reproducible_date() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch || !*epoch) return {};
+  char* end = nullptr;
+  const long long seconds = std::strtoll(epoch, &end, 10);
+  if (*end != '\0' || seconds < 0) return {};
+  const std::time_t time = static_cast<std::time_t>(seconds);
+  std::tm utc{};
+  if (!gmtime_r(&time, &utc)) return {};
+  char text[32];
+  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc);
+  return text;
+}
+
 }  // namespace
 
 // Writes the pixels to `file` in the format `format_path`'s extension names;
@@ -69,6 +88,7 @@ extern "C" int shadetree_image_io_write(const char* format_path, const char* fil
   }
   OIIO::ImageSpec spec(width, height, channels, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   spec.attribute("Software", "shadetree");
+  if (const std::string date = reproducible_date(); !date.empty()) spec.attribute("DateTime", date);
   if (!output->open(file, spec)) {
     set_error(error, error_size, "cannot write: " + output->geterror());
     return 1;

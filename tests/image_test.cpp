@@ -5,8 +5,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
+#include <stdlib.h>
 #include <unistd.h>
 
 #include "interp/interpreter.h"
@@ -191,6 +193,23 @@ TEST_F(ImageFiles, ChannelsCountAgainstTheLimitAndOnlyRgbaIsKept) {
   ASSERT_EQ(read->pixels.size(), 32u * 32u * 4u);
   EXPECT_EQ(read->pixels[2], 0.25f);
   EXPECT_EQ(read->pixels[3], 0.75f);
+}
+
+// Issue 21: EXR files embed the time they were written, so identical
+// renders differed in bytes. SOURCE_DATE_EPOCH fixes that time.
+TEST_F(ImageFiles, ExrFilesAreReproducibleUnderSourceDateEpoch) {
+  Image image{4, 2, 3, std::vector<float>(24, 0.5f)};
+  ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  const std::string first = (folder_ / "first.exr").string(), second = (folder_ / "second.exr").string();
+  ASSERT_TRUE(write_image(image, first).ok());
+  ASSERT_TRUE(write_image(image, second).ok());
+  ::unsetenv("SOURCE_DATE_EPOCH");
+  auto bytes = [](const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), {});
+  };
+  EXPECT_EQ(bytes(first), bytes(second));
+  EXPECT_NE(bytes(first).find("2023:11:14 22:13:20"), std::string::npos);
 }
 
 }  // namespace
