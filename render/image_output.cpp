@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "graph/file_path.h"
 #include "render/loadable_module.h"
 #include "render/output_file.h"
 
@@ -57,6 +58,7 @@ Status write_image(const Image& image, const std::string& path) {
 }
 
 Result<Image> read_image(const std::string& path, long long max_pixels) {
+  if (Status text = check_path_text(path, "image"); !text) return text.error();
   const ImageIoModule& module = image_io_module();
   if (!module.error.empty()) return failure(module.error);
   Image image;

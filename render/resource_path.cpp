@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "graph/file_path.h"
+
 namespace shadetree {
 namespace {
 
@@ -21,6 +23,11 @@ bool lies_under(const fs::path& path, const fs::path& folder) {
 
 Result<std::string> resolve_graph_resource(const std::string& graph_file, const std::string& path,
                                            const std::vector<std::string>& search_paths, const std::string& what) {
+  if (Status text = check_path_text(path, what); !text) {
+    Diagnostic refused = text.error();
+    refused.file = graph_file;
+    return refused;
+  }
   std::error_code error;
   // A graph named without a folder ("g.json") lies in the current one; an
   // empty folder would make every path lie "under" it.

@@ -5,6 +5,7 @@
 
 #include <glm/common.hpp>
 
+#include "graph/file_path.h"
 #include "render/loadable_module.h"
 #include "render/output_file.h"
 
@@ -49,6 +50,7 @@ Status write_vdb(const VoxelGrid& grid, const std::string& path) {
 }
 
 Result<VoxelGrid> read_vdb(const std::string& path) {
+  if (Status text = check_path_text(path, "VDB file"); !text) return text.error();
   const VdbModule& module = vdb_module();
   if (!module.error.empty()) return failure(module.error);
   VoxelGrid grid;

@@ -1,0 +1,73 @@
+// The path policy (graph/file_path.h) and every site that opens or writes
+// a file on a path someone else chose: each refuses a NUL, a control
+// character and an over-long name before it touches the disk.
+#include "graph/file_path.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+
+#include <unistd.h>
+
+#include "graph/parse.h"
+#include "render/image_output.h"
+#include "render/mesh.h"
+#include "render/resource_path.h"
+#include "render/vdb_file.h"
+
+namespace shadetree {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(CheckPathText, TakesOrdinaryPaths) {
+  for (const char* path : {"g.json", "graphs/marble.json", "/tmp/out.exr", "caf\xc3\xa9/x.png", "a b/c.obj"})
+    EXPECT_TRUE(check_path_text(path, "file").ok()) << path;
+}
+
+TEST(CheckPathText, RefusesNulControlCharactersAndOverLongNames) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {std::string("images/ocean.png\0.json", 22), "NUL"},
+      {"run\n.json", "control character"},
+      {"a\x1b[2J.json", "control character"},
+      {"", "empty"},
+      {std::string(256, 'n') + ".json", "longer than 255 bytes"},
+      {"dir/" + std::string(300, 'd') + "/g.json", "longer than 255 bytes"},
+      {std::string(5000, 'a'), "longer than 4096 bytes"},
+  };
+  for (const auto& [path, words] : cases) {
+    Status status = check_path_text(path, "output");
+    ASSERT_FALSE(status.ok()) << words;
+    EXPECT_EQ(status.error().status, ExitStatus::invalid_input);
+    const std::string line = status.error().to_string();
+    EXPECT_NE(line.find(words), std::string::npos) << line;
+    EXPECT_LT(line.size(), 400u) << line;
+    EXPECT_EQ(line.find('\n'), std::string::npos) << line;
+  }
+}
+
+// Each site given a path that names an existing file once the NUL cuts it:
+// a site that checked only the text after the NUL would open that file.
+TEST(FilePathPolicy, EverySiteThatOpensAFileRefusesANulInItsPath) {
+  const fs::path folder = fs::temp_directory_path() / ("shadetree-file-path-" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string real = (folder / "real").string();
+  const std::string cut = real + std::string("\0.x", 3);
+  const std::vector<std::pair<std::string, std::function<Diagnostic()>>> sites = {
+      {"load_graph", [&] { return load_graph(cut).error(); }},
+      {"resolve_graph_resource", [&] { return resolve_graph_resource((folder / "g.json").string(), "real" + std::string("\0.png", 5), {}, "image").error(); }},
+      {"load_mesh", [&] { return load_mesh(cut).error(); }},
+      {"read_image", [&] { return read_image(cut).error(); }},
+      {"read_vdb", [&] { return read_vdb(cut).error(); }},
+  };
+  for (const auto& [site, refuse] : sites) {
+    const Diagnostic error = refuse();
+    EXPECT_EQ(error.status, ExitStatus::invalid_input) << site;
+    EXPECT_NE(error.message.find("NUL"), std::string::npos) << site << ": " << error.to_string();
+  }
+  fs::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace shadetree
