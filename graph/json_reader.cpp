@@ -8,15 +8,6 @@ void JsonReader::fail(const std::string& node, const std::string& input, const s
   throw ParseError{Diagnostic{ExitStatus::invalid_input, file_, node, input, message}};
 }
 
-void JsonReader::check_fields(const json& object, std::initializer_list<const char*> allowed,
-                              const std::string& node, const std::string& what) const {
-  for (const auto& [key, value] : object.items()) {
-    bool known = false;
-    for (const char* name : allowed) known |= key == name;
-    if (!known) fail(node, {}, "unknown field \"" + key + "\" in " + what);
-  }
-}
-
 std::string JsonReader::required_string(const json& object, const char* key, const std::string& node) const {
   if (!object.contains(key)) fail(node, {}, std::string("missing field \"") + key + "\"");
   if (!object[key].is_string()) fail(node, {}, std::string("field \"") + key + "\" must be a string");

@@ -3,7 +3,6 @@
 // value, so every reader names the file and, where known, the node.
 #pragma once
 
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -28,10 +27,6 @@ class JsonReader {
   const std::string& file() const { return file_; }
 
   [[noreturn]] void fail(const std::string& node, const std::string& input, const std::string& message) const;
-
-  // Fails on a field of `object` not in `allowed`; `what` names the object.
-  void check_fields(const json& object, std::initializer_list<const char*> allowed, const std::string& node,
-                    const std::string& what) const;
 
   std::string required_string(const json& object, const char* key, const std::string& node) const;
   std::string optional_string(const json& object, const char* key, const std::string& node,

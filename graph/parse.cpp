@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "graph/file_path.h"
+#include "graph/format_fields.h"
 #include "graph/json_document.h"
 #include "graph/json_reader.h"
 #include "graph/parse_scene.h"
@@ -25,9 +26,6 @@ class Parser : JsonReader {
 
   Graph parse(const json& document) {
     if (!document.is_object()) fail({}, {}, "a graph file must hold a JSON object");
-    check_fields(document, {"format", "version", "name", "kind", "doc", "params", "functions", "nodes", "outputs",
-                            "render"},
-                 {}, "graph");
     Graph graph;
     graph.file = file();
     const std::string format = required_string(document, "format", {});
@@ -46,9 +44,10 @@ class Parser : JsonReader {
     const std::optional<GraphKind> known_kind = parse_graph_kind(kind);
     if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + kind + "\"");
     graph.kind = *known_kind;
+    check_format_fields(*this, document, graph_fields(graph.kind), graph.kind, "graph");
     graph.doc = optional_string(document, "doc", {}, {});
-    if (document.contains("params")) graph.params = parse_params(document["params"]);
-    if (document.contains("functions")) graph.functions = parse_functions(document["functions"]);
+    if (document.contains("params")) graph.params = parse_params(document["params"], graph.kind);
+    if (document.contains("functions")) graph.functions = parse_functions(document["functions"], graph.kind);
     if (!document.contains("nodes")) fail({}, {}, "missing field \"nodes\"");
     graph.nodes = parse_nodes(document["nodes"], {});
     if (!document.contains("outputs")) fail({}, {}, "missing field \"outputs\"");
@@ -89,13 +88,13 @@ class Parser : JsonReader {
     return result;
   }
 
-  std::vector<ParamDecl> parse_params(const json& params) const {
+  std::vector<ParamDecl> parse_params(const json& params, GraphKind kind) const {
     if (!params.is_object()) fail({}, {}, "field \"params\" must be an object of name: {type, default, ...}");
     std::vector<ParamDecl> result;
     for (const auto& [name, spec] : params.items()) {
       const std::string where = "param \"" + name + "\"";
       if (!spec.is_object()) fail({}, {}, where + " must be an object with type and default");
-      check_fields(spec, {"type", "default", "min", "max", "doc"}, {}, where);
+      check_format_fields(*this, spec, param_fields(), kind, where);
       ParamDecl param;
       param.name = name;
       if (!spec.contains("type")) fail({}, {}, where + " has no type");
@@ -110,13 +109,13 @@ class Parser : JsonReader {
     return result;
   }
 
-  std::vector<FunctionDef> parse_functions(const json& functions) const {
+  std::vector<FunctionDef> parse_functions(const json& functions, GraphKind kind) const {
     if (!functions.is_object()) fail({}, {}, "field \"functions\" must be an object of name: {inputs, nodes, outputs}");
     std::vector<FunctionDef> result;
     for (const auto& [name, spec] : functions.items()) {
       const std::string where = "function \"" + name + "\"";
       if (!spec.is_object()) fail({}, {}, where + " must be an object");
-      check_fields(spec, {"doc", "inputs", "nodes", "outputs"}, {}, where);
+      check_format_fields(*this, spec, function_fields(), kind, where);
       FunctionDef function;
       function.name = name;
       function.doc = optional_string(spec, "doc", {}, {});
@@ -127,7 +126,7 @@ class Parser : JsonReader {
           input.name = input_name;
           const std::string input_where = where + " input \"" + input_name + "\"";
           if (input_spec.is_object()) {
-            check_fields(input_spec, {"type", "default"}, {}, input_where);
+            check_format_fields(*this, input_spec, function_input_fields(), kind, input_where);
             if (!input_spec.contains("type")) fail({}, {}, input_where + " has no type");
             input.type = type_field(input_spec["type"], {}, input_where);
             if (input_spec.contains("default"))
@@ -271,7 +270,7 @@ class Parser : JsonReader {
 
   RenderSettings parse_render(const json& render, GraphKind kind) const {
     if (!render.is_object()) fail({}, {}, "field \"render\" must be an object");
-    check_fields(render, {"size", "domain", "z", "frame", "scene", "volume"}, {}, "render");
+    check_format_fields(*this, render, render_fields(kind), kind, "render");
     RenderSettings settings;
     if (render.contains("size")) {
       const json& size = render["size"];
@@ -287,7 +286,7 @@ class Parser : JsonReader {
     if (render.contains("domain")) {
       const json& domain = render["domain"];
       if (!domain.is_object()) fail({}, {}, "render domain must be {\"min\": [x, y], \"max\": [x, y]}");
-      check_fields(domain, {"min", "max"}, {}, "render domain");
+      check_format_fields(*this, domain, domain_fields(), kind, "render domain");
       for (const char* corner : {"min", "max"}) {
         if (!domain.contains(corner)) fail({}, {}, std::string("render domain has no \"") + corner + "\"");
         std::vector<float> values = numbers(domain[corner], {}, std::string("render domain ") + corner);
@@ -302,11 +301,9 @@ class Parser : JsonReader {
     if (render.contains("z")) settings.z = number(render["z"], {}, "render z");
     if (render.contains("frame")) settings.frame = number(render["frame"], {}, "render frame");
     if (render.contains("scene")) {
-      if (kind == GraphKind::texture) fail({}, {}, "render scene is for surface and volume graphs, not textures");
       settings.scene = parse_scene(*this, render["scene"], kind);
     }
     if (render.contains("volume")) {
-      if (kind != GraphKind::volume) fail({}, {}, "render volume is for volume graphs");
       settings.volume = parse_volume(*this, render["volume"]);
     }
     return settings;

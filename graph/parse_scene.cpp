@@ -3,7 +3,10 @@
 // driver, which knows the search path.
 #include "graph/parse_scene.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "graph/format_fields.h"
 
 namespace shadetree {
 namespace {
@@ -14,8 +17,7 @@ class SceneParser {
 
   SceneDesc parse(const json& scene) const {
     if (!scene.is_object()) fail("render scene must be an object");
-    reader_.check_fields(scene, {"camera", "objects", "lights", "background", "ambient", "lighting", "shadows"}, {},
-                         "render scene");
+    check_format_fields(reader_, scene, scene_fields(kind_), kind_, "render scene");
     SceneDesc result;
     if (scene.contains("camera")) result.camera = camera(scene["camera"]);
     // A surface graph shades its objects; a volume graph's objects are
@@ -82,7 +84,7 @@ class SceneParser {
 
   CameraDesc camera(const json& spec) const {
     if (!spec.is_object()) fail("scene camera must be an object");
-    reader_.check_fields(spec, {"position", "target", "up", "fov", "orthographic"}, {}, "scene camera");
+    check_format_fields(reader_, spec, camera_fields(), kind_, "scene camera");
     CameraDesc camera;
     if (spec.contains("position")) camera.position = vec3(spec["position"], "camera position");
     if (spec.contains("target")) camera.target = vec3(spec["target"], "camera target");
@@ -110,7 +112,7 @@ class SceneParser {
 
   TransformDesc transform(const json& spec, const std::string& where) const {
     if (!spec.is_object()) fail(where + " transform must be an object of translate, rotate, scale");
-    reader_.check_fields(spec, {"translate", "rotate", "scale"}, {}, where + " transform");
+    check_format_fields(reader_, spec, transform_fields(), kind_, where + " transform");
     TransformDesc result;
     if (spec.contains("translate")) result.translate = vec3(spec["translate"], where + " translate");
     if (spec.contains("rotate")) result.rotate_degrees = vec3(spec["rotate"], where + " rotate");
@@ -131,30 +133,19 @@ class SceneParser {
     const std::string type = reader_.required_string(spec, "type", {});
     ObjectDesc object;
     object.id = static_cast<int>(index);
-    auto common = [&](std::initializer_list<const char*> own) {
-      std::vector<const char*> fields = {"type", "id", "transform", "doc"};
-      if (kind_ == GraphKind::volume) fields.push_back("color");
-      fields.insert(fields.end(), own);
-      for (const auto& [key, value] : spec.items()) {
-        bool known = false;
-        for (const char* name : fields) known |= key == name;
-        if (!known) fail("unknown field \"" + key + "\" in " + where + " (a " + type + ")");
-      }
-    };
+    if (std::find(scene_object_types.begin(), scene_object_types.end(), type) == scene_object_types.end())
+      fail(where + " has unknown type \"" + type + "\" (sphere, torus, plane, box, revolution, mesh)");
+    check_format_fields(reader_, spec, scene_object_fields(type), kind_, where + " (a " + type + ")");
     if (type == "sphere") {
-      common({"radius"});
       object.type = ObjectType::sphere;
       if (spec.contains("radius")) object.radius = positive(spec["radius"], where + " radius");
     } else if (type == "torus") {
-      common({"major_radius", "minor_radius"});
       object.type = ObjectType::torus;
       if (spec.contains("major_radius")) object.major_radius = positive(spec["major_radius"], where + " major_radius");
       if (spec.contains("minor_radius")) object.minor_radius = positive(spec["minor_radius"], where + " minor_radius");
     } else if (type == "plane") {
-      common({});
       object.type = ObjectType::plane;
     } else if (type == "box") {
-      common({"size"});
       object.type = ObjectType::box;
       if (spec.contains("size")) {
         std::array<float, 3> size = vec3(spec["size"], where + " size");
@@ -164,7 +155,6 @@ class SceneParser {
         }
       }
     } else if (type == "revolution") {
-      common({"profile"});
       object.type = ObjectType::revolution;
       if (!spec.contains("profile")) fail(where + " (a revolution) needs a \"profile\" of [radius, height] points");
       const json& profile = spec["profile"];
@@ -177,12 +167,9 @@ class SceneParser {
         object.profile.push_back({values[0], values[1]});
       }
     } else if (type == "mesh") {
-      common({"file"});
       object.type = ObjectType::mesh;
       object.mesh_file = reader_.required_string(spec, "file", {});
       if (object.mesh_file.empty()) fail(where + " file must not be empty");
-    } else {
-      fail(where + " has unknown type \"" + type + "\" (sphere, torus, plane, box, revolution, mesh)");
     }
     if (spec.contains("id")) {
       const json& id = spec["id"];
@@ -199,18 +186,17 @@ class SceneParser {
     if (!spec.is_object()) fail(where + " must be an object with a \"type\"");
     const std::string type = reader_.required_string(spec, "type", {});
     LightDesc light;
+    if (std::find(scene_light_types.begin(), scene_light_types.end(), type) == scene_light_types.end())
+      fail(where + " has unknown type \"" + type + "\" (directional, point)");
+    check_format_fields(reader_, spec, scene_light_fields(type), kind_, where);
     if (type == "directional") {
-      reader_.check_fields(spec, {"type", "direction", "color", "intensity"}, {}, where);
       light.type = LightType::directional;
       if (spec.contains("direction")) light.direction = vec3(spec["direction"], where + " direction");
       const auto& d = light.direction;
       if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0.0f)) fail(where + " direction must not be zero");
-    } else if (type == "point") {
-      reader_.check_fields(spec, {"type", "position", "color", "intensity"}, {}, where);
+    } else {
       light.type = LightType::point;
       if (spec.contains("position")) light.position = vec3(spec["position"], where + " position");
-    } else {
-      fail(where + " has unknown type \"" + type + "\" (directional, point)");
     }
     if (spec.contains("color")) light.color = color(spec["color"], where + " color");
     if (spec.contains("intensity")) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "graph/format_fields.h"
+
 namespace shadetree {
 namespace {
 
@@ -39,13 +41,13 @@ std::string thinness_problem(const VolumeDesc& volume) {
 VolumeDesc parse_volume(const JsonReader& reader, const json& volume) {
   auto fail = [&](const std::string& message) { reader.fail({}, {}, message); };
   if (!volume.is_object()) fail("render volume must be an object with \"bounds\"");
-  reader.check_fields(volume, {"bounds", "step", "reference_step", "jitter", "doc"}, {}, "render volume");
+  check_format_fields(reader, volume, volume_fields(), GraphKind::volume, "render volume");
   VolumeDesc result;
   if (!volume.contains("bounds"))
     fail("render volume has no \"bounds\" (a volume must be bounded: {\"min\": [x, y, z], \"max\": [x, y, z]})");
   const json& bounds = volume["bounds"];
   if (!bounds.is_object()) fail("render volume bounds must be {\"min\": [x, y, z], \"max\": [x, y, z]}");
-  reader.check_fields(bounds, {"min", "max"}, {}, "render volume bounds");
+  check_format_fields(reader, bounds, bounds_fields(), GraphKind::volume, "render volume bounds");
   for (const char* corner : {"min", "max"}) {
     if (!bounds.contains(corner)) fail(std::string("render volume bounds have no \"") + corner + "\"");
     const std::vector<float> values = reader.numbers(bounds[corner], {}, std::string("render volume bounds ") + corner);

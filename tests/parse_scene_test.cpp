@@ -78,7 +78,7 @@ TEST(ParseScene, MalformedScenesGiveOneLineErrors) {
   EXPECT_NE(error_of(R"({"objects": [{"type": "revolution", "profile": [[-1, 0], [1, 1]]}]})").find("radius >= 0"),
             std::string::npos);
   EXPECT_NE(error_of(R"({"objects": [{"type": "mesh"}]})").find("file"), std::string::npos);
-  EXPECT_NE(error_of(R"({"objects": [{"type": "plane", "color": [1, 0, 0]}]})").find("unknown field \"color\""),
+  EXPECT_NE(error_of(R"({"objects": [{"type": "plane", "color": [1, 0, 0]}]})").find("\"color\" is for volume graphs, not surfaces"),
             std::string::npos)
       << "a surface graph's color output colours its objects";
   EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": 1e39}]})").find("32-bit float"),
