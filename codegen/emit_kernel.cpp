@@ -19,8 +19,6 @@
 
 #include <llvm/IR/Constants.h>
 #include <llvm/IR/IRBuilder.h>
-#include <llvm/IR/Intrinsics.h>
-#include <llvm/IR/IntrinsicsX86.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/IR/Verifier.h>
@@ -28,6 +26,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include "codegen/op_library.h"
+#include "codegen/table_lookups.h"
 #include "nodes/noise_tables.h"
 #include "nodes/op_frame.h"
 #include "nodes/registry.h"
@@ -345,125 +344,6 @@ class KernelEmitter {
   std::map<std::uint32_t, llvm::Constant*> tables_;
 };
 
-// One lookup per lane: extract the index, load, insert.
-llvm::Value* per_lane_lookup(llvm::IRBuilder<>& builder, llvm::Type* element, llvm::Value* table, llvm::Value* index,
-                             int width) {
-  llvm::Value* result = llvm::PoisonValue::get(llvm::FixedVectorType::get(element, static_cast<unsigned>(width)));
-  for (int lane = 0; lane < width; ++lane) {
-    llvm::Value* address = builder.CreateInBoundsGEP(element, table, builder.CreateExtractElement(index, lane));
-    result = builder.CreateInsertElement(result, builder.CreateLoad(element, address), lane);
-  }
-  return result;
-}
-
-// A 256-entry table held in sixteen 16-lane registers: vpermt2ps/vpermt2d
-// pick within each 32-entry pair by the index's low 5 bits, then three
-// rounds of selects on bits 5, 6 and 7 pick the pair. AVX-512 only.
-llvm::Value* in_register_lookup(llvm::IRBuilder<>& builder, llvm::Module& module, bool is_float, llvm::Value* table,
-                                llvm::Value* index) {
-  llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
-  auto* vector = llvm::FixedVectorType::get(element, 16);
-  llvm::Function* permute = llvm::Intrinsic::getDeclaration(
-      &module, is_float ? llvm::Intrinsic::x86_avx512_vpermi2var_ps_512 : llvm::Intrinsic::x86_avx512_vpermi2var_d_512);
-  std::vector<llvm::Value*> candidates;
-  for (int pair = 0; pair < 8; ++pair) {
-    llvm::Value* low = builder.CreateAlignedLoad(vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair),
-                                                 llvm::Align(4));
-    llvm::Value* high = builder.CreateAlignedLoad(
-        vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair + 16), llvm::Align(4));
-    candidates.push_back(builder.CreateCall(permute, {low, index, high}));
-  }
-  for (int bit = 5; bit < 8; ++bit) {
-    llvm::Value* take_high = builder.CreateICmpNE(
-        builder.CreateAnd(index, builder.CreateVectorSplat(16, builder.getInt32(1u << bit))),
-        llvm::ConstantAggregateZero::get(index->getType()));
-    std::vector<llvm::Value*> chosen;
-    for (std::size_t c = 0; c < candidates.size(); c += 2)
-      chosen.push_back(builder.CreateSelect(take_high, candidates[c + 1], candidates[c]));
-    candidates = std::move(chosen);
-  }
-  return candidates[0];
-}
-
-// A 256-entry int table whose values fit in a byte (the noise permutation),
-// looked up with AVX-512 VBMI byte permutes: the table as 256 bytes in four
-// registers, two vpermi2b on the index's low 7 bits, a select on bit 7.
-llvm::Value* byte_permute_lookup(llvm::IRBuilder<>& builder, llvm::Module& module, llvm::Value* table,
-                                 llvm::Value* index) {
-  auto* bytes = llvm::FixedVectorType::get(builder.getInt8Ty(), 64);
-  auto* ints = llvm::FixedVectorType::get(builder.getInt32Ty(), 16);
-  llvm::Function* permute = llvm::Intrinsic::getDeclaration(&module, llvm::Intrinsic::x86_avx512_vpermi2var_qi_512);
-  // The table's 256 ints narrowed to bytes, as four 64-byte registers
-  // (loop-invariant: hoisted out of the sample loop).
-  std::vector<llvm::Value*> quarters;
-  for (int quarter = 0; quarter < 4; ++quarter) {
-    std::vector<llvm::Value*> parts;
-    for (int part = 0; part < 4; ++part) {
-      llvm::Value* chunk = builder.CreateAlignedLoad(
-          ints, builder.CreateConstInBoundsGEP1_32(builder.getInt32Ty(), table, 64 * quarter + 16 * part),
-          llvm::Align(4));
-      parts.push_back(builder.CreateTrunc(chunk, llvm::FixedVectorType::get(builder.getInt8Ty(), 16)));
-    }
-    std::vector<int> first(32), second(32), all(64);
-    for (int i = 0; i < 32; ++i) first[i] = second[i] = i;
-    for (int i = 0; i < 64; ++i) all[i] = i;
-    llvm::Value* low = builder.CreateShuffleVector(parts[0], parts[1], first);
-    llvm::Value* high = builder.CreateShuffleVector(parts[2], parts[3], second);
-    quarters.push_back(builder.CreateShuffleVector(low, high, all));
-  }
-  // The 16 indices as the first 16 bytes of a 64-byte index register.
-  std::vector<int> widen(64);
-  for (int i = 0; i < 64; ++i) widen[i] = i < 16 ? i : 16;
-  llvm::Value* narrow = builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
-  llvm::Value* byte_index =
-      builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
-  llvm::Value* low_half = builder.CreateCall(permute, {quarters[0], byte_index, quarters[1]});
-  llvm::Value* high_half = builder.CreateCall(permute, {quarters[2], byte_index, quarters[3]});
-  llvm::Value* upper = builder.CreateICmpSLT(byte_index, llvm::Constant::getNullValue(bytes));  // bit 7
-  llvm::Value* chosen = builder.CreateSelect(upper, high_half, low_half);
-  std::vector<int> first16(16);
-  for (int i = 0; i < 16; ++i) first16[i] = i;
-  return builder.CreateZExt(builder.CreateShuffleVector(chosen, first16), ints);
-}
-
-// Defines the library's table lookups st_gather[256]_<type>_w<W>(out, table,
-// index) with the chosen strategy.
-void define_gathers(llvm::Module& module, GatherStrategy strategy) {
-  llvm::LLVMContext& context = module.getContext();
-  for (int width : {4, 8, 16}) {
-    for (bool table256 : {false, true}) {
-      for (bool is_float : {true, false}) {
-        const std::string name = std::string(table256 ? "st_gather256_" : "st_gather_") + (is_float ? "f32" : "i32") +
-                                 "_w" + std::to_string(width);
-        llvm::Function* function = module.getFunction(name);
-        if (!function || !function->isDeclaration()) continue;
-        llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "entry", function));
-        llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
-        auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
-        auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
-        auto args = function->arg_begin();
-        llvm::Value* out = &*args++;
-        llvm::Value* table = &*args++;
-        llvm::Value* index = builder.CreateLoad(index_type, &*args);
-        llvm::Value* result;
-        const bool byte_permutes = strategy == GatherStrategy::in_register_byte_permutes;
-        const bool in_register = (strategy == GatherStrategy::in_register || byte_permutes) && width == 16;
-        if (in_register && table256 && byte_permutes && !is_float) {
-          result = byte_permute_lookup(builder, module, table, index);
-        } else if (in_register && table256) {
-          result = in_register_lookup(builder, module, is_float, table, index);
-        } else if (strategy == GatherStrategy::hardware || in_register) {
-          result = builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
-        } else {
-          result = per_lane_lookup(builder, element, table, index, width);
-        }
-        builder.CreateStore(result, out);
-        builder.CreateRetVoid();
-      }
-    }
-  }
-}
-
 // The instructions `function` brings when inlined: its own and those of
 // the library functions it calls (table lookups aside: the code generator
 // defines those after this is measured).
@@ -536,7 +416,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   std::unique_ptr<llvm::Module> module = load_op_library(context);
   if (!module) return failure("the embedded op library bitcode is unreadable");
   module->setModuleIdentifier(function_name);
-  define_gathers(*module, gathers);
+  define_table_lookups(*module, gathers);
   // The library is only there to be inlined into this kernel.
   for (llvm::Function& function : *module) {
     if (function.isDeclaration()) continue;

@@ -1,14 +1,10 @@
 #include "jit/jit_compiler.h"
 
-#include <unistd.h>
-
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -19,17 +15,17 @@
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
-#include <llvm/IR/LegacyPassManager.h>
 #include <llvm/IR/Module.h>
-#include <llvm/Passes/PassBuilder.h>
 #include <llvm/Support/ErrorHandling.h>
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
 #include <llvm/Support/xxhash.h>
 #include <llvm/Target/TargetMachine.h>
-#include <llvm/TargetParser/Host.h>
 
 #include "codegen/op_library.h"
+#include "jit/host_target.h"
+#include "jit/kernel_object_cache.h"
+#include "jit/optimization_pipeline.h"
 #include "nodes/noise_tables.h"
 
 namespace shadetree {
@@ -62,12 +58,6 @@ struct KernelCode {
 
 namespace {
 
-bool host_has(const char* feature) {
-  static const auto features = llvm::sys::getHostCPUFeatures();
-  auto found = features.find(feature);
-  return found != features.end() && found->second;
-}
-
 // In-register lookups use AVX-512 instructions: never emit them on a host
 // without it, whatever the settings ask for.
 GatherStrategy effective_gathers(const JitSettings& settings) {
@@ -94,16 +84,10 @@ std::string error_text(llvm::Error error) {
   return text;
 }
 
-std::string host_features() {
-  llvm::SubtargetFeatures features;
-  for (const auto& [name, enabled] : llvm::sys::getHostCPUFeatures()) features.AddFeature(name, enabled);
-  return features.getString();
-}
-
 // A canonical text of everything the machine code depends on.
 std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
-  text << kernel_abi_hash() << " " << op_library_hash() << " " << SHADETREE_CODEGEN_DIGEST << "\n" << width << " " << static_cast<int>(gathers) << "\n" << llvm::sys::getHostCPUName().str() << "\n" << host_features() << "\n";
+  text << kernel_abi_hash() << " " << op_library_hash() << " " << SHADETREE_CODEGEN_DIGEST << "\n" << width << " " << static_cast<int>(gathers) << "\n" << host_cpu_name() << "\n" << host_features() << "\n";
   for (const IrInstr& instr : ir.code) {
     text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
          << ' ' << static_cast<int>(instr.generic)
@@ -123,110 +107,6 @@ std::string kernel_name(const std::string& key) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(llvm::xxh3_64bits(llvm::StringRef(key))));
   return std::string("shade_kernel_") + hex;
-}
-
-std::filesystem::path cache_folder(const JitSettings& settings) {
-  if (!settings.cache_folder.empty()) return settings.cache_folder;
-  if (const char* folder = std::getenv("SHADETREE_CACHE_DIR"); folder && *folder) return folder;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "shadetree";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "shadetree";
-  return {};
-}
-
-llvm::CodeGenOptLevel code_generation_level(Optimization optimization) {
-  return optimization == Optimization::full ? llvm::CodeGenOptLevel::Aggressive : llvm::CodeGenOptLevel::None;
-}
-
-// The quick pipeline: the library inlined (it was optimized when it was
-// built), then only what makes the inlined code straight again.
-constexpr const char* quick_pipeline = "always-inline,globaldce,function(sroa,early-cse,simplifycfg,adce)";
-
-void optimize_module(llvm::Module& module, llvm::TargetMachine& machine, Optimization optimization) {
-  llvm::LoopAnalysisManager loops;
-  llvm::FunctionAnalysisManager functions;
-  llvm::CGSCCAnalysisManager cgscc;
-  llvm::ModuleAnalysisManager modules;
-  llvm::PassBuilder builder(&machine);
-  builder.registerModuleAnalyses(modules);
-  builder.registerCGSCCAnalyses(cgscc);
-  builder.registerFunctionAnalyses(functions);
-  builder.registerLoopAnalyses(loops);
-  builder.crossRegisterProxies(loops, functions, cgscc, modules);
-  if (optimization == Optimization::full) {
-    builder.buildPerModuleDefaultPipeline(llvm::OptimizationLevel::O3).run(module, modules);
-    return;
-  }
-  llvm::ModulePassManager passes;
-  llvm::cantFail(builder.parsePassPipeline(passes, quick_pipeline));
-  passes.run(module, modules);
-}
-
-Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                             const std::string& name, GatherStrategy gathers,
-                                                             llvm::TargetMachine& machine, Optimization optimization) {
-  Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
-  if (!module) return module.error();
-  llvm::Module& m = **module;
-  m.setDataLayout(machine.createDataLayout());
-  m.setTargetTriple(machine.getTargetTriple().str());
-  for (llvm::Function& function : m) {
-    if (function.isDeclaration()) continue;
-    function.addFnAttr("target-cpu", machine.getTargetCPU());
-    function.addFnAttr("target-features", machine.getTargetFeatureString());
-  }
-  optimize_module(m, machine, optimization);
-  return module;
-}
-
-Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine) {
-  llvm::SmallString<0> text;
-  llvm::raw_svector_ostream stream(text);
-  llvm::legacy::PassManager passes;
-  if (machine.addPassesToEmitFile(passes, stream, nullptr, llvm::CodeGenFileType::AssemblyFile))
-    return failure("LLVM cannot emit assembly for this target");
-  passes.run(module);
-  return std::string(text.str());
-}
-
-// Keeps `folder` to `limit` kernel objects, removing the least recently
-// used (written, or read: compile() touches what it reads) first: an
-// editor session compiles a program per edit.
-void prune_objects(const std::filesystem::path& folder, int limit) {
-  std::error_code error;
-  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> objects;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.starts_with("shade_kernel_") && entry.path().extension() == ".o")
-      objects.emplace_back(entry.last_write_time(error), entry.path());
-  }
-  const std::size_t keep = static_cast<std::size_t>(std::max(limit, 0));
-  if (objects.size() <= keep) return;
-  std::sort(objects.begin(), objects.end());
-  for (std::size_t i = 0; i + keep < objects.size(); ++i) std::filesystem::remove(objects[i].second, error);
-}
-
-// The disk cache: each compiled object next to its kernel name, written
-// to a temporary file and renamed, so a second process never reads half of
-// one. A cache that cannot be written is only a missed speed-up.
-void store_object(const std::filesystem::path& folder, const std::string& name, llvm::MemoryBufferRef object,
-                  int limit) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  static std::atomic<long> writes{0};  // two threads of a process may store the same kernel
-  const auto target = folder / (name + ".o");
-  const auto temporary = folder / (name + ".o.partial-" + std::to_string(static_cast<long>(::getpid())) + "-" +
-                                   std::to_string(++writes));
-  std::ofstream file(temporary, std::ios::binary);
-  file.write(object.getBufferStart(), static_cast<std::streamsize>(object.getBufferSize()));
-  file.close();
-  if (!file) {
-    std::filesystem::remove(temporary, error);
-    return;
-  }
-  std::filesystem::rename(temporary, target, error);
-  if (error) std::filesystem::remove(temporary, error);
-  prune_objects(folder, limit);
 }
 
 // One LLJIT for the process. Never destroyed: kernels may outlive every
@@ -262,7 +142,7 @@ class Jit {
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
     }
-    const std::filesystem::path folder = settings.disk_cache ? cache_folder(settings) : std::filesystem::path();
+    const std::filesystem::path folder = settings.disk_cache ? kernel_cache_folder(settings.cache_folder) : std::filesystem::path();
     std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
     {
       std::lock_guard lock(mutex_);
@@ -283,7 +163,7 @@ class Jit {
     if (cached_only) return compiled({}, CacheHit::none, 0);
     Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers, optimization);
     if (!object) return object.error();
-    if (!folder.empty()) store_object(folder, name, (*object)->getMemBufferRef(), settings.disk_cache_objects);
+    if (!folder.empty()) store_kernel_object(folder, name, (*object)->getBuffer(), settings.disk_cache_objects);
     std::lock_guard lock(mutex_);
     // Another thread may have compiled the same program meanwhile.
     if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
@@ -321,7 +201,7 @@ class Jit {
       startup_error_ = error_text(machine_builder.takeError());
       return;
     }
-    machine_builder->setCPU(llvm::sys::getHostCPUName().str());
+    machine_builder->setCPU(host_cpu_name());
     machine_builder->getFeatures().addFeaturesVector(
         llvm::SubtargetFeatures(host_features()).getFeatures());
     machine_builder_ = *machine_builder;
@@ -451,12 +331,6 @@ class Jit {
 
 }  // namespace
 
-int host_vector_width() {
-  if (host_has("avx512f")) return 16;
-  if (host_has("avx2")) return 8;
-  return 4;
-}
-
 long resident_kernel_count() { return resident_kernels.load(); }
 
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
@@ -472,15 +346,6 @@ std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const 
   Result<CompiledKernel> found = Jit::instance().compile(ir, width, settings, true);
   if (!found || !found->code) return std::nullopt;
   return *found;
-}
-
-// Measured with `shadetree bench --gathers` (figures in docs/architecture.md):
-// per-lane loads beat vgatherdps on the x86 parts we have, permutes over
-// registers beat both where AVX-512 allows them, and byte permutes (VBMI)
-// do the noise permutation cheaper still.
-GatherStrategy host_gather_strategy() {
-  if (host_vector_width() < 16) return GatherStrategy::per_lane;
-  return host_has("avx512vbmi") ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
 }
 
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {

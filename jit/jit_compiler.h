@@ -1,13 +1,12 @@
-// ORC LLJIT for shade kernels: host CPU, full O3 pipeline (or a quick one),
-// and two caches.
+// ORC LLJIT for shade kernels: host CPU (jit/host_target.h), full O3
+// pipeline or a quick one (jit/optimization_pipeline.h), and two caches.
 // In memory, compiled kernels are kept by a hash of the optimized ShadeIR
 // (and width and CPU), so a second compile of the same graph is a lookup;
 // params are passed at call time, so changing one reuses the machine code.
 // Each kernel's code has an ORC ResourceTracker of its own and is removed
 // from the JIT once neither the cache nor any Kernel holds it.
-// On disk (a user cache folder), each kernel's object file is kept so that
-// a second run of the same graph skips compilation altogether; the folder
-// is bounded too, the least recently used objects going first.
+// On disk (jit/kernel_object_cache.h), each kernel's object file is kept so
+// that a second run of the same graph skips compilation altogether.
 #pragma once
 
 #include <cstdint>
@@ -18,11 +17,9 @@
 #include "codegen/emit_kernel.h"
 #include "graph/diagnostic.h"
 #include "ir/shade_ir.h"
+#include "jit/host_target.h"
 
 namespace shadetree {
-
-// 16 with AVX-512, 8 with AVX2, else 4.
-int host_vector_width();
 
 enum class CacheHit { none, memory, disk };
 
@@ -65,9 +62,6 @@ struct JitSettings {
   int disk_cache_objects = 4096;  // the folder keeps this many kernels, the most recently used
   Optimization optimization = Optimization::full;
 };
-
-// The table lookup strategy used when JitSettings::gathers is empty.
-GatherStrategy host_gather_strategy();
 
 // Compiles (or finds) the kernel for `ir` at `width` (0: host width).
 // Thread-safe, and compiles run in parallel. LLVM failures come back as

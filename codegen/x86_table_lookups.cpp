@@ -1,0 +1,75 @@
+#include "codegen/x86_table_lookups.h"
+
+#include <vector>
+
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/IntrinsicsX86.h>
+#include <llvm/IR/Module.h>
+
+namespace shadetree {
+
+llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, bool is_float,
+                                       llvm::Value* table, llvm::Value* index) {
+  llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+  auto* vector = llvm::FixedVectorType::get(element, 16);
+  llvm::Function* permute = llvm::Intrinsic::getDeclaration(
+      &module, is_float ? llvm::Intrinsic::x86_avx512_vpermi2var_ps_512 : llvm::Intrinsic::x86_avx512_vpermi2var_d_512);
+  std::vector<llvm::Value*> candidates;
+  for (int pair = 0; pair < 8; ++pair) {
+    llvm::Value* low = builder.CreateAlignedLoad(vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair),
+                                                 llvm::Align(4));
+    llvm::Value* high = builder.CreateAlignedLoad(
+        vector, builder.CreateConstInBoundsGEP1_32(element, table, 32 * pair + 16), llvm::Align(4));
+    candidates.push_back(builder.CreateCall(permute, {low, index, high}));
+  }
+  for (int bit = 5; bit < 8; ++bit) {
+    llvm::Value* take_high = builder.CreateICmpNE(
+        builder.CreateAnd(index, builder.CreateVectorSplat(16, builder.getInt32(1u << bit))),
+        llvm::ConstantAggregateZero::get(index->getType()));
+    std::vector<llvm::Value*> chosen;
+    for (std::size_t c = 0; c < candidates.size(); c += 2)
+      chosen.push_back(builder.CreateSelect(take_high, candidates[c + 1], candidates[c]));
+    candidates = std::move(chosen);
+  }
+  return candidates[0];
+}
+
+llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                                   llvm::Value* index) {
+  auto* bytes = llvm::FixedVectorType::get(builder.getInt8Ty(), 64);
+  auto* ints = llvm::FixedVectorType::get(builder.getInt32Ty(), 16);
+  llvm::Function* permute = llvm::Intrinsic::getDeclaration(&module, llvm::Intrinsic::x86_avx512_vpermi2var_qi_512);
+  // The table's 256 ints narrowed to bytes, as four 64-byte registers
+  // (loop-invariant: hoisted out of the sample loop).
+  std::vector<llvm::Value*> quarters;
+  for (int quarter = 0; quarter < 4; ++quarter) {
+    std::vector<llvm::Value*> parts;
+    for (int part = 0; part < 4; ++part) {
+      llvm::Value* chunk = builder.CreateAlignedLoad(
+          ints, builder.CreateConstInBoundsGEP1_32(builder.getInt32Ty(), table, 64 * quarter + 16 * part),
+          llvm::Align(4));
+      parts.push_back(builder.CreateTrunc(chunk, llvm::FixedVectorType::get(builder.getInt8Ty(), 16)));
+    }
+    std::vector<int> first(32), second(32), all(64);
+    for (int i = 0; i < 32; ++i) first[i] = second[i] = i;
+    for (int i = 0; i < 64; ++i) all[i] = i;
+    llvm::Value* low = builder.CreateShuffleVector(parts[0], parts[1], first);
+    llvm::Value* high = builder.CreateShuffleVector(parts[2], parts[3], second);
+    quarters.push_back(builder.CreateShuffleVector(low, high, all));
+  }
+  // The 16 indices as the first 16 bytes of a 64-byte index register.
+  std::vector<int> widen(64);
+  for (int i = 0; i < 64; ++i) widen[i] = i < 16 ? i : 16;
+  llvm::Value* narrow = builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
+  llvm::Value* byte_index =
+      builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
+  llvm::Value* low_half = builder.CreateCall(permute, {quarters[0], byte_index, quarters[1]});
+  llvm::Value* high_half = builder.CreateCall(permute, {quarters[2], byte_index, quarters[3]});
+  llvm::Value* upper = builder.CreateICmpSLT(byte_index, llvm::Constant::getNullValue(bytes));  // bit 7
+  llvm::Value* chosen = builder.CreateSelect(upper, high_half, low_half);
+  std::vector<int> first16(16);
+  for (int i = 0; i < 16; ++i) first16[i] = i;
+  return builder.CreateZExt(builder.CreateShuffleVector(chosen, first16), ints);
+}
+
+}  // namespace shadetree

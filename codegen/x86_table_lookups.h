@@ -1,0 +1,29 @@
+// x86 lowerings of the op library's table lookups, apart from the generic
+// emitter as Halide keeps CodeGen_X86 beside CodeGen_LLVM: AVX-512
+// permutes over a 256-entry table held in registers, which beat hardware
+// gathers on the x86 parts measured (docs/architecture.md). Each takes 16
+// indices and returns the 16 looked-up values; the caller has checked
+// that the target has AVX-512 (and VBMI for the byte permutes).
+#pragma once
+
+namespace llvm {
+class IRBuilderBase;
+class Module;
+class Value;
+}  // namespace llvm
+
+namespace shadetree {
+
+// vpermt2ps/vpermt2d pick within each 32-entry pair of the table's sixteen
+// registers by the index's low 5 bits, then three rounds of selects on
+// bits 5, 6 and 7 pick the pair.
+llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, bool is_float,
+                                       llvm::Value* table, llvm::Value* index);
+
+// An int table whose values fit in a byte (the noise permutation), as 256
+// bytes in four registers (AVX-512 VBMI): two vpermi2b on the index's low
+// 7 bits, a select on bit 7.
+llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                                   llvm::Value* index);
+
+}  // namespace shadetree

@@ -1,0 +1,32 @@
+// What a kernel module goes through between the code generator's LLVM IR
+// and machine code, by JitSettings::optimization: the full O3 pipeline and
+// LLVM's optimizing code generator, or the quick one (the library inlined
+// and cleaned up, the fast code generator).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <llvm/Support/CodeGen.h>
+
+#include "codegen/emit_kernel.h"
+#include "graph/diagnostic.h"
+#include "jit/jit_compiler.h"
+
+namespace llvm {
+class TargetMachine;
+}
+
+namespace shadetree {
+
+llvm::CodeGenOptLevel code_generation_level(Optimization optimization);
+
+// The kernel module of `ir`, made for `machine` and optimized.
+Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                             const std::string& name, GatherStrategy gathers,
+                                                             llvm::TargetMachine& machine, Optimization optimization);
+
+// The module's assembly for `machine`.
+Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine);
+
+}  // namespace shadetree
