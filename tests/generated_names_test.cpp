@@ -44,7 +44,7 @@ TEST(CodeIdentifier, StartsWithALetter) {
 
 TEST(CodeIdentifier, EmptyOrPunctuationGivesTheFallback) {
   EXPECT_EQ(code_identifier(""), "unnamed");
-  EXPECT_EQ(code_identifier("*/ ??/", "kernel"), "kernel");
+  EXPECT_EQ(code_identifier("*/ ?\?/", "kernel"), "kernel");
 }
 
 TEST(CodeIdentifier, IsCutToTheMaximumLength) {
@@ -76,7 +76,7 @@ TEST(QuotedText, EscapesQuotesBackslashesAndLineBreaks) {
 
 TEST(QuotedText, NoCommentCanBeClosedAndNoTrigraphFormed) {
   EXPECT_EQ(quoted_text("*/ x /*"), "\"*\\057 x /*\"");
-  EXPECT_EQ(quoted_text("??/"), "\"\\077?/\"");
+  EXPECT_EQ(quoted_text("?\?/"), "\"\\077?/\"");
   EXPECT_EQ(quoted_text("why?"), "\"why?\"");
 }
 
