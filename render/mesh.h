@@ -24,6 +24,7 @@ namespace shadetree {
 // a 24 GB machine running two renders. OBJ and PLY files are counted
 // before they are loaded.
 inline constexpr std::size_t max_mesh_triangles = 5'000'000;
+inline constexpr std::size_t max_mesh_vertices = 3 * max_mesh_triangles;
 inline constexpr std::uintmax_t max_mesh_file_bytes = 512ull << 20;
 
 struct TriangleMesh {

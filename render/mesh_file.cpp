@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
@@ -61,29 +62,48 @@ class MeshFileOnly : public Assimp::DefaultIOSystem {
   std::string path_;
 };
 
-// The triangles an OBJ or PLY file will hold, counted from its text before
-// Assimp builds it (Assimp takes about 700 bytes a triangle while loading),
-// or 0 for other formats, which only the file size bounds.
-std::size_t counted_triangles(const std::string& path) {
+// Why Assimp must not be given an OBJ or PLY file, judged from its text:
+// more triangles or vertices than the limits (Assimp takes about 700 bytes
+// a triangle while loading), a PLY element count larger than the file
+// could hold (999999999 vertices in a 100-byte file took gigabytes), or a
+// PLY header without its end (on which Assimp never returned). Empty if
+// none; other formats only the file size bounds.
+std::string mesh_text_problem(const std::string& path, std::uintmax_t bytes) {
   std::ifstream file(path, std::ios::binary);
   std::string line;
-  std::size_t triangles = 0;
+  const std::string too_many_triangles = "mesh has more than " + std::to_string(max_mesh_triangles) + " triangles";
+  const std::string too_many_vertices = "mesh has more than " + std::to_string(max_mesh_vertices) + " vertices";
   if (std::getline(file, line) && line.rfind("ply", 0) == 0) {
-    // "element face N" in the header, each face at least one triangle.
-    for (int lines = 0; lines < 10000 && std::getline(file, line) && line.rfind("end_header", 0) != 0; ++lines)
-      if (line.rfind("element face ", 0) == 0) return std::strtoull(line.c_str() + 13, nullptr, 10);
-    return 0;
+    for (int lines = 0; lines < 10000 && std::getline(file, line); ++lines) {
+      if (line.rfind("end_header", 0) == 0) return {};
+      if (line.rfind("element ", 0) != 0) continue;
+      std::istringstream words(line.substr(8));
+      std::string element;
+      unsigned long long count = 0;
+      words >> element >> count;
+      if (element == "face" && count > max_mesh_triangles) return too_many_triangles;
+      if (element == "vertex" && count > max_mesh_vertices) return too_many_vertices;
+      // Every element takes at least a byte of the file.
+      if (count > bytes)
+        return "PLY header declares " + std::to_string(count) + " \"" + element + "\" elements, more than a file of " +
+               std::to_string(bytes) + " bytes holds";
+    }
+    return "PLY header has no end_header";
   }
-  if (std::filesystem::path(path).extension() != ".obj") return 0;
+  if (std::filesystem::path(path).extension() != ".obj") return {};
+  std::size_t triangles = 0, vertices = 0;
   do {
+    if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t')) continue;
+    if (line[0] == 'v' && ++vertices > max_mesh_vertices) return too_many_vertices;
+    if (line[0] != 'f') continue;
     // "f a b c d": one triangle per corner past the second.
-    if (line.size() < 2 || line[0] != 'f' || (line[1] != ' ' && line[1] != '\t')) continue;
     std::size_t corners = 0;
     for (std::size_t i = 1; i < line.size(); ++i)
       if ((line[i - 1] == ' ' || line[i - 1] == '\t') && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++corners;
     if (corners > 2) triangles += corners - 2;
+    if (triangles > max_mesh_triangles) return too_many_triangles;
   } while (std::getline(file, line));
-  return triangles;
+  return {};
 }
 
 }  // namespace
@@ -99,9 +119,8 @@ Result<TriangleMesh> load_mesh(const std::string& path) {
   if (bytes > max_mesh_file_bytes)
     return mesh_error(path, ExitStatus::invalid_input,
                       "mesh file is larger than " + std::to_string(max_mesh_file_bytes >> 20) + " MiB");
-  if (counted_triangles(path) > max_mesh_triangles)
-    return mesh_error(path, ExitStatus::invalid_input,
-                      "mesh has more than " + std::to_string(max_mesh_triangles) + " triangles");
+  if (std::string problem = mesh_text_problem(path, bytes); !problem.empty())
+    return mesh_error(path, ExitStatus::invalid_input, problem);
 
   Assimp::Importer importer;
   importer.SetIOHandler(new MeshFileOnly(path));  // the importer owns it

@@ -117,12 +117,20 @@ TEST_F(MeshFiles, MaterialFilesAnObjNamesAreNeverOpened) {
 
 // Counted from the header before Assimp builds anything (10 M triangles
 // took it 7 GB).
-TEST_F(MeshFiles, TooManyTrianglesAreRefusedBeforeLoading) {
+TEST_F(MeshFiles, TooManyTrianglesAndTruncatedHeadersAreRefusedBeforeLoading) {
   const std::string ply = write("huge.ply",
                                 "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                                 "property float y\nproperty float z\nelement face 6000000\n"
                                 "property list uchar int vertex_indices\nend_header\n");
   expect_error_naming(load_mesh(ply), "huge.ply", "more than 5000000 triangles");
+  // Assimp never returned on a PLY header without its end, and took
+  // gigabytes for a header declaring 999999999 vertices in 100 bytes (9999999 here, under the vertex limit).
+  expect_error_naming(load_mesh(write("unended.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n")),
+                      "unended.ply", "PLY header has no end_header");
+  expect_error_naming(load_mesh(write("declared.ply",
+                                      "ply\nformat binary_little_endian 1.0\nelement vertex 9999999\n"
+                                      "property float x\nproperty float y\nproperty float z\nend_header\n")),
+                      "declared.ply", "PLY header declares 9999999 \"vertex\" elements, more than a file of");
   // One polygon of 5000003 corners: a fan of 5000001 triangles.
   std::string faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
   for (int i = 0; i < 5000003; ++i) faces += " 1";
