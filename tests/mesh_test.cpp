@@ -124,7 +124,8 @@ TEST_F(MeshFiles, TooManyTrianglesAndTruncatedHeadersAreRefusedBeforeLoading) {
                                 "property list uchar int vertex_indices\nend_header\n");
   expect_error_naming(load_mesh(ply), "huge.ply", "more than 5000000 triangles");
   // Assimp never returned on a PLY header without its end, and took
-  // gigabytes for a header declaring 999999999 vertices in 100 bytes (9999999 here, under the vertex limit).
+  // gigabytes for a header declaring 999999999 vertices in 100 bytes
+  // (9999999 here, under the vertex limit).
   expect_error_naming(load_mesh(write("unended.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n")),
                       "unended.ply", "PLY header has no end_header");
   expect_error_naming(load_mesh(write("declared.ply",
