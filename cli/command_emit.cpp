@@ -68,7 +68,7 @@ ExitStatus emit(const EmitArguments& arguments) {
   if (arguments.after_each_pass) return ExitStatus::ok;
   if (arguments.cpp) return emit_cpp_file(arguments, *loaded);
   if (arguments.graph) {
-    std::printf("; %s: %d instructions before optimization, %zu after\n", arguments.file.c_str(),
+    std::printf("; %s: %d instructions before optimization, %zu after\n", printable(arguments.file).c_str(),
                 loaded->instructions_before_optimization, loaded->ir.code.size());
     std::printf("%s", format_shade_ir(loaded->ir).c_str());
     return ExitStatus::ok;

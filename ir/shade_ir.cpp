@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "graph/diagnostic.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -56,7 +57,7 @@ std::string format_shade_ir(const ShadeIR& ir) {
     }
     if (instr.kind == IrOpKind::param) text << " @" << instr.immediate[0];
     if (instr.uniform && (instr.kind == IrOpKind::op || instr.kind == IrOpKind::global)) text << "  uniform";
-    if (!instr.source.empty()) text << "  ; " << instr.source;
+    if (!instr.source.empty()) text << "  ; " << printable(instr.source);  // a node id may hold a line break
     text << "\n";
     if (instr.kind == IrOpKind::begin_region) ++depth;
   }

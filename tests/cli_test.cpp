@@ -455,5 +455,20 @@ TEST_F(Cli, CheckPrintsNamesOnOneLineAndObjectFailuresAreOneLine) {
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
 }
 
+// A hostile-input pass found emit --graph printing node ids raw: a line
+// break split an instruction's line, an escape sequence reached the
+// terminal.
+TEST_F(Cli, EmitListingsPrintNodeIdsOnOneLine) {
+  const fs::path graph = write("ids.json", R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+      "nodes": [{"id": "p\n%9 = evil \u001b[2J", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p\n%9 = evil \u001b[2J"}},
+                {"id": "c", "op": "color", "in": {"r": "s.x"}}], "outputs": {"color": "c"}})");
+  const CommandResult run = shadetree("emit " + graph.string() + " --graph");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.out.find('\x1b'), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("; p\\n%9 = evil \\x1b[2J\n"), std::string::npos) << run.out;
+  for (std::size_t at = run.out.find('\n'); at != std::string::npos; at = run.out.find('\n', at + 1))
+    EXPECT_NE(run.out.compare(at + 1, 3, "%9 "), 0) << run.out;
+}
+
 }  // namespace
 }  // namespace shadetree
