@@ -167,6 +167,34 @@ TEST_F(EditorServerTest, PathsMayNotLeaveTheServedFolder) {
   EXPECT_FALSE(fs::exists(root_ / "escape.json"));
 }
 
+// Issue 21: "ocean.png%00.json" passed the ".json" rule and overwrote
+// ocean.png; names over 255 bytes got 500.
+TEST_F(EditorServerTest, ANulInAPathCannotSaveOverAnotherFile) {
+  std::ofstream(root_ / "graphs" / "ocean.png") << "image bytes";
+  for (const char* path : {"ocean.png%00.json", "run.sh%00.json", "more/two.json%00", "new%0Aline.json",
+                           "tab%09.json", "escape%1B[31m.json"}) {
+    auto saved = client_->Put(std::string("/api/graph?path=") + path, headers_, "{}", "application/json");
+    ASSERT_TRUE(saved) << path;
+    EXPECT_EQ(saved->status, 400) << path << ": " << saved->body;
+    EXPECT_EQ(client_->Get(std::string("/api/graph?path=") + path, headers_)->status, 400) << path;
+    EXPECT_EQ(client_->Post(std::string("/api/check?path=") + path, headers_, sines_graph, "application/json")->status,
+              400)
+        << path;
+    error_of(saved);
+  }
+  std::ifstream image(root_ / "graphs" / "ocean.png");
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(image)), std::istreambuf_iterator<char>()), "image bytes");
+  EXPECT_FALSE(fs::exists(root_ / "graphs" / "run.sh"));
+  const std::string longest = std::string(250, 'n') + ".json", too_long = "n" + longest;
+  EXPECT_EQ(client_->Put("/api/graph?path=" + longest, headers_, "{}", "application/json")->status, 200);
+  auto refused = client_->Put("/api/graph?path=" + too_long, headers_, "{}", "application/json");
+  EXPECT_EQ(refused->status, 400) << refused->body;
+  EXPECT_NE(error_of(refused).find("255"), std::string::npos);
+  EXPECT_EQ(client_->Put("/api/graph?path=" + std::string(4100, 'a') + ".json", headers_, "{}", "application/json")
+                ->status,
+            400);
+}
+
 TEST_F(EditorServerTest, SavesThroughATemporaryFileWhatCheckAccepts) {
   const std::string edited = std::regex_replace(sines_graph, std::regex("\"default\": 3"), "\"default\": 7");
   auto saved = client_->Put("/api/graph?path=more/saved.json", headers_, edited, "application/json");
