@@ -186,14 +186,21 @@ void EditorServer::add_routes() {
       send_error(response, 403, "the Host header \"" + host + "\" is not this server's");
       return httplib::Server::HandlerResponse::Handled;
     }
+    // The cookie rides on requests that other pages of this machine make
+    // (a text/plain POST from another port is same-site and needs no
+    // preflight), so it only lets the page and its files load and graphs be
+    // read. Every other request compiles, renders or writes, and must name
+    // the token itself, in the URL or in a header no other page can set.
     std::string token = request.get_param_value("token");
     if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
-    if (token.empty()) token = cookie_value(request, token_cookie);
-    if (!same_secret(token, options_.token)) {
-      send_error(response, 403, "missing or wrong token: open the URL shadetree serve printed");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    return httplib::Server::HandlerResponse::Unhandled;
+    if (same_secret(token, options_.token)) return httplib::Server::HandlerResponse::Unhandled;
+    const bool reads = request.method == "GET" || request.method == "HEAD";
+    if (reads && same_secret(cookie_value(request, token_cookie), options_.token))
+      return httplib::Server::HandlerResponse::Unhandled;
+    send_error(response, 403,
+               reads ? "missing or wrong token: open the URL shadetree serve printed"
+                     : "this request needs the token in the URL or the X-Shadetree-Token header, not only the cookie");
+    return httplib::Server::HandlerResponse::Handled;
   });
   http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
     send_error(response, 500, "internal error");

@@ -5,12 +5,16 @@
 //
 // Security of a local server: it binds to 127.0.0.1 unless told otherwise;
 // every request must carry the session's random token (in the URL, as
-// Jupyter does, then as a SameSite cookie or the X-Shadetree-Token
-// header), so other users of the machine and other web pages cannot drive
-// it; requests whose Host header is not the server's own are refused
-// (DNS rebinding); only files inside the served folder are read or
-// written; bodies, graphs and previews are capped. Every refusal is a 4xx
-// with a one-line JSON error, {"error": "..."}.
+// Jupyter does, or the X-Shadetree-Token header), so other users of the
+// machine and other web pages cannot drive it. The page sets it as a
+// SameSite cookie too, which suffices for GET requests only (the page, its
+// files, reading graphs): other local pages' requests carry that cookie,
+// and none may compile, render or write. Requests whose Host header is not
+// the server's own are refused (DNS rebinding); only files inside the
+// served folder are read or written, through one path policy
+// (graph/file_path.h); bodies, graphs and previews are capped, and so are
+// connections (server/bounded_http_server.h). Every refusal is a 4xx with
+// a one-line JSON error, {"error": "..."}.
 //
 // Endpoints (JSON unless said):
 //   GET  /                      the editor (sets the token cookie)

@@ -114,6 +114,40 @@ TEST_F(EditorServerTest, EveryRequestNeedsTheToken) {
             std::string::npos);
 }
 
+// Issue 21: the SameSite cookie rides on text/plain POSTs that pages on
+// other local ports make, so another local page could make the server
+// compile and render. The cookie alone now only reads.
+TEST_F(EditorServerTest, TheCookieAloneCannotCompileRenderOrWrite) {
+  const httplib::Headers cookie = {{"Cookie", "shadetree_token=" + server_->token()}};
+  EXPECT_EQ(client_->Get("/api/graphs", cookie)->status, 200);
+  EXPECT_EQ(client_->Get("/api/graph?path=waves.json", cookie)->status, 200);
+  const std::vector<std::pair<std::string, std::string>> costly = {
+      {"POST", "/api/check?path=waves.json"},
+      {"POST", "/api/preview?path=waves.json&width=8&height=8"},
+      {"POST", "/api/export?path=waves.json&width=8&height=8"},
+      {"PUT", "/api/graph?path=forged.json"}};
+  const std::string graph =  // a program of its own, compiled by no other test
+      std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""), "\"frequency\": 4.25");
+  auto send = [&](const std::string& method, const std::string& url, const httplib::Headers& headers) {
+    return method == "PUT" ? client_->Put(url, headers, graph, "text/plain")
+                           : client_->Post(url, headers, graph, "text/plain");
+  };
+  for (const auto& [method, url] : costly) {
+    auto refused = send(method, url, cookie);
+    ASSERT_TRUE(refused) << url;
+    EXPECT_EQ(refused->status, 403) << method << " " << url;
+    EXPECT_NE(error_of(refused).find("X-Shadetree-Token"), std::string::npos);
+  }
+  EXPECT_FALSE(fs::exists(root_ / "graphs" / "forged.json"));
+  auto stats = nlohmann::json::parse(client_->Get("/api/stats", headers_)->body);
+  EXPECT_EQ(stats["previews"], 0);
+  EXPECT_EQ(stats["compiles"], 0);
+  for (const auto& [method, url] : costly) {
+    EXPECT_EQ(send(method, url, headers_)->status, 200) << "with the header: " << url;
+    EXPECT_EQ(send(method, url + "&token=" + server_->token(), cookie)->status, 200) << "with the URL's: " << url;
+  }
+}
+
 // DNS rebinding: a page of evil.example resolving to 127.0.0.1 still says
 // Host: evil.example.
 TEST_F(EditorServerTest, ForeignHostHeadersAreRefused) {
