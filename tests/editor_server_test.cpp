@@ -243,6 +243,33 @@ TEST_F(EditorServerTest, SavesThroughATemporaryFileWhatCheckAccepts) {
   EXPECT_EQ(client_->Put("/api/graph?path=nowhere/x.json", headers_, "{}", "application/json")->status, 400);
 }
 
+// Issue 21: concurrent saves of one file shared a temporary name, and 6 of
+// 100 failed with 500.
+TEST_F(EditorServerTest, ConcurrentSavesOfOneFileAllSucceed) {
+  const int clients = 8, saves_per_client = 13;
+  std::vector<std::future<std::vector<int>>> statuses;
+  for (int c = 0; c < clients; ++c)
+    statuses.push_back(std::async(std::launch::async, [&, c] {
+      httplib::Client client("127.0.0.1", server_->port());
+      client.set_read_timeout(60);
+      const std::string body = "{\"client\": " + std::to_string(c) + "}";
+      std::vector<int> answered;
+      for (int s = 0; s < saves_per_client; ++s) {
+        auto saved = client.Put("/api/graph?path=contested.json", headers_, body, "application/json");
+        answered.push_back(saved ? saved->status : 0);
+      }
+      return answered;
+    }));
+  for (auto& answered : statuses)
+    for (int status : answered.get()) EXPECT_EQ(status, 200);
+  std::ifstream file(root_ / "graphs" / "contested.json");
+  const auto saved = nlohmann::json::parse(file, nullptr, false);
+  ASSERT_TRUE(saved.is_object()) << "one whole save";
+  EXPECT_TRUE(saved.contains("client"));
+  for (const auto& entry : fs::directory_iterator(root_ / "graphs"))
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+}
+
 TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
   auto good = client_->Post("/api/check?path=waves.json", headers_, sines_graph, "application/json");
   ASSERT_EQ(good->status, 200);
