@@ -130,7 +130,7 @@ EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, Ser
       editor_(std::move(editor)),
       files_(graph_files()),
       kernels_(options.jit, options.background_compiles),
-      server_(new httplib::Server) {}
+      server_(make_bounded_http_server(options.connections)) {}
 
 EditorServer::~EditorServer() { stop(); }
 
@@ -158,6 +158,11 @@ Result<std::unique_ptr<EditorServer>> EditorServer::start(const ServeOptions& re
                       "cannot listen on " + options.host + ":" + std::to_string(options.port)};
   httplib::Server* http = server->server_.get();
   server->thread_ = std::thread([http] { http->listen_after_bind(); });
+  // Until it runs: httplib's stop() does nothing before, and the thread
+  // would listen on after a stop() that came too soon (starting its workers
+  // takes a while).
+  for (int wait = 0; wait < 10000 && !http->is_running(); ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return server;
 }
 

@@ -54,6 +54,7 @@
 #include "graph/check.h"
 #include "graph/diagnostic.h"
 #include "jit/jit_compiler.h"
+#include "server/bounded_http_server.h"
 #include "server/preview_kernels.h"
 #include "server/served_folder.h"
 
@@ -74,6 +75,7 @@ struct ServeOptions {
   int max_export_side = 4096;
   JitSettings jit;
   int background_compiles = 2;  // at once (server/preview_kernels.h)
+  ConnectionLimits connections;  // against slow and idle clients (server/bounded_http_server.h)
 };
 
 class EditorServer {

@@ -11,6 +11,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -35,6 +36,18 @@ const char* const sines_graph = R"({"format": "shadetree-graph", "version": 1, "
             {"id": "c", "op": "to_color", "in": {"v": "s"}}],
   "outputs": {"color": "c"}})";
 
+// A raw TCP connection to 127.0.0.1:port, or -1.
+int connect_to_loopback(int port) {
+  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) return socket;
+  ::close(socket);
+  return -1;
+}
+
 class EditorServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -50,12 +63,11 @@ class EditorServerTest : public ::testing::Test {
     std::ofstream(root_ / "secret.json") << "{\"secret\": true}";
     fs::create_symlink(root_ / "secret.json", root_ / "graphs" / "link.json");
     std::ofstream(root_ / "editor" / "index.html") << "<!doctype html><title>editor</title>";
-    ServeOptions options;
-    options.folder = (root_ / "graphs").string();
-    options.editor_folder = (root_ / "editor").string();
-    options.max_body = 64 * 1024;
-    options.jit.cache_folder = (root_ / "kernel-cache").string();  // every new program compiles
-    Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+    options_.folder = (root_ / "graphs").string();
+    options_.editor_folder = (root_ / "editor").string();
+    options_.max_body = 64 * 1024;
+    options_.jit.cache_folder = (root_ / "kernel-cache").string();  // every new program compiles
+    Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options_);
     ASSERT_TRUE(started.ok()) << started.error().to_string();
     server_ = std::move(*started);
     client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->port());
@@ -90,6 +102,7 @@ class EditorServerTest : public ::testing::Test {
   }
 
   fs::path root_;
+  ServeOptions options_;
   std::unique_ptr<EditorServer> server_;
   std::unique_ptr<httplib::Client> client_;
   httplib::Headers headers_;
@@ -322,12 +335,8 @@ TEST_F(EditorServerTest, OversizedAndMalformedRequestsGetErrorsAndTheServerLives
   ASSERT_TRUE(large);
   EXPECT_EQ(large->status, 413);
   // Garbage on a raw socket.
-  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(server_->port()));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  const int socket = connect_to_loopback(server_->port());
+  ASSERT_GE(socket, 0);
   const std::string garbage = "\x01\x02 NOT HTTP \r\n\r\n\xff\xfe";
   ASSERT_GT(::write(socket, garbage.data(), garbage.size()), 0);
   char reply[512];
@@ -521,6 +530,66 @@ TEST_F(EditorServerTest, ResidentMemoryStaysFlatOverAThousandGraphEdits) {
   EXPECT_LT(grown, 3L << 20) << "grew by " << grown / 1024 << " KiB over " << edits - warm_up << " edits";
 #endif
   EXPECT_LE(resident_kernel_count(), memory_cache_kernels + 8) << "kernels no one uses leave the JIT";
+}
+
+// Issue 21: ten connections that each sent a header line every 2 s, with
+// no token, blocked every other client (slowloris). Here the slow ones
+// outnumber the server's workers, and are cut at the request deadline.
+TEST_F(EditorServerTest, ANormalRequestIsAnsweredWhileTenSlowConnectionsAreOpen) {
+  ServeOptions options = options_;
+  options.connections.workers = 4;
+  options.connections.request_timeout = std::chrono::milliseconds(1000);
+  Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+  ASSERT_TRUE(started.ok()) << started.error().to_string();
+  const int port = (*started)->port();
+  const httplib::Headers token = {{"X-Shadetree-Token", (*started)->token()}};
+  const int slow_connections = 10;
+  std::atomic<bool> answered{false};
+  std::atomic<int> connected{0}, cut{0};
+  std::vector<std::thread> slow;
+  for (int i = 0; i < slow_connections; ++i)
+    slow.emplace_back([&] {
+      const int socket = connect_to_loopback(port);
+      ++connected;
+      if (socket < 0) return;
+      const std::string start = "GET /api/graphs HTTP/1.1\r\n";
+      ::send(socket, start.data(), start.size(), MSG_NOSIGNAL);
+      // A header line every 200 ms (well within each read's timeout), for
+      // as long as the normal request waits, up to a minute.
+      for (int line = 0; line < 300 && !answered; ++line) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        if (::send(socket, "X-Slow: 1\r\n", 11, MSG_NOSIGNAL) < 0) {
+          ++cut;
+          break;
+        }
+      }
+      ::close(socket);
+    });
+  while (connected < slow_connections) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  httplib::Client client("127.0.0.1", port);
+  client.set_connection_timeout(60);
+  client.set_read_timeout(60);
+  auto result = client.Get("/api/graphs", token);
+  answered = true;
+  for (std::thread& thread : slow) thread.join();
+  ASSERT_TRUE(result) << "no answer while the slow connections were open";
+  EXPECT_EQ(result->status, 200);
+  EXPECT_GT(cut.load(), 0) << "the slow connections are cut, not served";
+}
+
+TEST_F(EditorServerTest, ConnectionsPastTheCapAreRefusedAtOnce) {
+  ServeOptions options = options_;
+  options.connections.workers = 1;
+  options.connections.max_connections = 2;
+  Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+  ASSERT_TRUE(started.ok()) << started.error().to_string();
+  const int served = connect_to_loopback((*started)->port()), waiting = connect_to_loopback((*started)->port());
+  const int refused = connect_to_loopback((*started)->port());
+  ASSERT_GE(refused, 0);
+  char reply[256] = "";
+  const ssize_t read = ::recv(refused, reply, sizeof reply - 1, 0);  // the server closes it at once
+  EXPECT_EQ(std::string(reply, std::max<ssize_t>(read, 0)).substr(0, 12), "HTTP/1.1 503");
+  for (int socket : {served, waiting, refused}) ::close(socket);
 }
 
 }  // namespace
