@@ -41,7 +41,9 @@
 //                               the body rendered as an image file (up to max_export_side)
 //   GET  /api/stats             {"compiles": kernels compiled since start, "compiling": in the
 //                                background now, "previews": N,
-//                                "rendering": previews in progress, "kernels": JIT kernels resident}
+//                                "rendering": previews in progress, "kernels": JIT kernels resident:
+//                                the memory cache's (jit/jit_compiler.h, 64) and those compiles and
+//                                renders under way hold besides}
 #pragma once
 
 #include <atomic>

@@ -592,5 +592,20 @@ TEST_F(EditorServerTest, ConnectionsPastTheCapAreRefusedAtOnce) {
   for (int socket : {served, waiting, refused}) ::close(socket);
 }
 
+// Issue 21 reported 65 kernels where the README promises the 64 most
+// recently used: kernels in use by a compile or render under way are
+// resident besides those; once they end, exactly 64 remain.
+TEST_F(EditorServerTest, StatsReportTheDocumentedSixtyFourKernelsOnceCompilesEnd) {
+  for (int n = 0; n < memory_cache_kernels + 8; ++n) {
+    const std::string graph = std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""),
+                                                 "\"frequency\": " + std::to_string(2.0 + n * 1e-3));
+    ASSERT_EQ(client_->Post("/api/preview?path=waves.json&width=8&height=8", headers_, graph, "application/json")
+                  ->status,
+              200);
+  }
+  wait_for_background_compiles();
+  EXPECT_EQ(nlohmann::json::parse(client_->Get("/api/stats", headers_)->body)["kernels"], memory_cache_kernels);
+}
+
 }  // namespace
 }  // namespace shadetree
