@@ -33,7 +33,7 @@ struct ConnectionLimits {
   // For the next request of a connection kept alive, or the first of a new
   // one, to start.
   std::chrono::milliseconds keep_alive_timeout{5000};
-  int keep_alive_requests = 100;  // per connection, then it closes
+  int keep_alive_requests = 5;  // per connection, then it closes
 };
 
 // An httplib server (routes are added as usual) that holds to `limits`.
