@@ -1,6 +1,8 @@
 // Requests to `shadetree serve` (server/editor_server.h). They carry the
-// session token in a header: the cookie would do too, but not for a page
-// opened from a file:// URL in tests.
+// session token in a header: the server takes the cookie alone for GET
+// requests only, since other local pages' requests carry it too; previews,
+// checks, exports and saves need the header. So the page needs the token
+// in its URL: one opened without it (by the cookie) can only read.
 const token = new URLSearchParams(location.search).get("token") || "";
 
 export function api(method, url, body, signal) {

@@ -15,7 +15,9 @@ Status check_output_folder(const std::string& path);
 
 // write(temporary) writes the file to `temporary` and returns why it could
 // not, or "" on success; then the file is renamed to `path`. The temporary
-// name keeps `path`'s extension, by which some writers choose a format.
+// name is unique to the call, so concurrent writes of one path each finish
+// whole (the last rename wins), and keeps `path`'s extension, by which
+// some writers choose a format.
 Status write_then_rename(const std::string& path, const std::function<std::string(const std::string&)>& write);
 
 }  // namespace shadetree

@@ -130,7 +130,7 @@ EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, Ser
       editor_(std::move(editor)),
       files_(graph_files()),
       kernels_(options.jit, options.background_compiles),
-      server_(new httplib::Server) {}
+      server_(make_bounded_http_server(options.connections)) {}
 
 EditorServer::~EditorServer() { stop(); }
 
@@ -158,6 +158,11 @@ Result<std::unique_ptr<EditorServer>> EditorServer::start(const ServeOptions& re
                       "cannot listen on " + options.host + ":" + std::to_string(options.port)};
   httplib::Server* http = server->server_.get();
   server->thread_ = std::thread([http] { http->listen_after_bind(); });
+  // Until it runs: httplib's stop() does nothing before, and the thread
+  // would listen on after a stop() that came too soon (starting its workers
+  // takes a while).
+  for (int wait = 0; wait < 10000 && !http->is_running(); ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return server;
 }
 
@@ -186,14 +191,21 @@ void EditorServer::add_routes() {
       send_error(response, 403, "the Host header \"" + host + "\" is not this server's");
       return httplib::Server::HandlerResponse::Handled;
     }
+    // The cookie rides on requests that other pages of this machine make
+    // (a text/plain POST from another port is same-site and needs no
+    // preflight), so it only lets the page and its files load and graphs be
+    // read. Every other request compiles, renders or writes, and must name
+    // the token itself, in the URL or in a header no other page can set.
     std::string token = request.get_param_value("token");
     if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
-    if (token.empty()) token = cookie_value(request, token_cookie);
-    if (!same_secret(token, options_.token)) {
-      send_error(response, 403, "missing or wrong token: open the URL shadetree serve printed");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    return httplib::Server::HandlerResponse::Unhandled;
+    if (same_secret(token, options_.token)) return httplib::Server::HandlerResponse::Unhandled;
+    const bool reads = request.method == "GET" || request.method == "HEAD";
+    if (reads && same_secret(cookie_value(request, token_cookie), options_.token))
+      return httplib::Server::HandlerResponse::Unhandled;
+    send_error(response, 403,
+               reads ? "missing or wrong token: open the URL shadetree serve printed"
+                     : "this request needs the token in the URL or the X-Shadetree-Token header, not only the cookie");
+    return httplib::Server::HandlerResponse::Handled;
   });
   http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
     send_error(response, 500, "internal error");

@@ -5,12 +5,16 @@
 //
 // Security of a local server: it binds to 127.0.0.1 unless told otherwise;
 // every request must carry the session's random token (in the URL, as
-// Jupyter does, then as a SameSite cookie or the X-Shadetree-Token
-// header), so other users of the machine and other web pages cannot drive
-// it; requests whose Host header is not the server's own are refused
-// (DNS rebinding); only files inside the served folder are read or
-// written; bodies, graphs and previews are capped. Every refusal is a 4xx
-// with a one-line JSON error, {"error": "..."}.
+// Jupyter does, or the X-Shadetree-Token header), so other users of the
+// machine and other web pages cannot drive it. The page sets it as a
+// SameSite cookie too, which suffices for GET requests only (the page, its
+// files, reading graphs): other local pages' requests carry that cookie,
+// and none may compile, render or write. Requests whose Host header is not
+// the server's own are refused (DNS rebinding); only files inside the
+// served folder are read or written, through one path policy
+// (graph/file_path.h); bodies, graphs and previews are capped, and so are
+// connections (server/bounded_http_server.h). Every refusal is a 4xx with
+// a one-line JSON error, {"error": "..."}.
 //
 // Endpoints (JSON unless said):
 //   GET  /                      the editor (sets the token cookie)
@@ -37,7 +41,9 @@
 //                               the body rendered as an image file (up to max_export_side)
 //   GET  /api/stats             {"compiles": kernels compiled since start, "compiling": in the
 //                                background now, "previews": N,
-//                                "rendering": previews in progress, "kernels": JIT kernels resident}
+//                                "rendering": previews in progress, "kernels": JIT kernels resident:
+//                                the memory cache's (jit/jit_compiler.h, 64) and those compiles and
+//                                renders under way hold besides}
 #pragma once
 
 #include <atomic>
@@ -50,6 +56,7 @@
 #include "graph/check.h"
 #include "graph/diagnostic.h"
 #include "jit/jit_compiler.h"
+#include "server/bounded_http_server.h"
 #include "server/preview_kernels.h"
 #include "server/served_folder.h"
 
@@ -70,6 +77,7 @@ struct ServeOptions {
   int max_export_side = 4096;
   JitSettings jit;
   int background_compiles = 2;  // at once (server/preview_kernels.h)
+  ConnectionLimits connections;  // against slow and idle clients (server/bounded_http_server.h)
 };
 
 class EditorServer {

@@ -16,6 +16,41 @@ const char* source_name(PreviewKernel::Source source) {
   return "";
 }
 
+CompileThread::CompileThread() : thread_([this] { work(); }) {}
+
+CompileThread::~CompileThread() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+Result<CompiledKernel> CompileThread::run(const std::function<Result<CompiledKernel>()>& compile) {
+  std::packaged_task<Result<CompiledKernel>()> task(compile);
+  std::future<Result<CompiledKernel>> compiled = task.get_future();
+  {
+    std::lock_guard lock(mutex_);
+    tasks_.push_back(std::move(task));
+  }
+  wake_.notify_one();
+  return compiled.get();
+}
+
+void CompileThread::work() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [&] { return stopping_ || !tasks_.empty(); });
+    if (tasks_.empty()) return;
+    std::packaged_task<Result<CompiledKernel>()> task = std::move(tasks_.front());
+    tasks_.pop_front();
+    lock.unlock();
+    task();
+    lock.lock();
+  }
+}
+
 PreviewKernels::PreviewKernels(JitSettings settings, int background_compiles)
     : settings_(std::move(settings)), background_compiles_(background_compiles) {}
 
@@ -56,7 +91,7 @@ Result<PreviewKernel> PreviewKernels::kernel_for(const ShadeIR& ir) {
       return PreviewKernel{tiered, PreviewKernel::Source::compiling};
     }
   }
-  Result<CompiledKernel> compiled = compile_kernel(ir, 0, settings_);
+  Result<CompiledKernel> compiled = foreground_compiles_.run([&] { return compile_kernel(ir, 0, settings_); });
   if (!compiled) return compiled.error();
   if (compiled->cache == CacheHit::none) ++compiles_;
   return PreviewKernel{make_jit_kernel(ir, *compiled), PreviewKernel::Source::compiled};

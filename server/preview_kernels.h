@@ -14,8 +14,13 @@
 #pragma once
 
 #include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -34,6 +39,26 @@ struct PreviewKernel {
 
 // "memory", "disk", "compiled" or "compiling" (X-Kernel).
 const char* source_name(PreviewKernel::Source source);
+
+// Runs compiles one at a time on a thread of its own. The JIT keeps a
+// target machine (about 1 MB) for each thread that compiles, for good:
+// compiled on the server's workers, a worker first used late grew the
+// server's memory then (issue 21: about 8 KB per edit, with httplib's
+// workers taken in turn).
+class CompileThread {
+ public:
+  CompileThread();
+  ~CompileThread();  // after the compiles queued
+  Result<CompiledKernel> run(const std::function<Result<CompiledKernel>()>& compile);
+
+ private:
+  void work();
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::packaged_task<Result<CompiledKernel>()>> tasks_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
 
 class PreviewKernels {
  public:
@@ -57,6 +82,7 @@ class PreviewKernels {
   std::mutex mutex_;
   std::vector<Compiling> compiling_;
   std::atomic<long> compiles_{0};
+  CompileThread foreground_compiles_;  // past background_compiles_
 };
 
 }  // namespace shadetree

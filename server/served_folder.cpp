@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "graph/file_path.h"
+
 namespace shadetree {
 
 namespace fs = std::filesystem;
@@ -17,8 +19,11 @@ Result<ServedFolder> ServedFolder::open(const std::string& folder) {
 }
 
 Result<fs::path> ServedFolder::resolve(const std::string& relative) const {
+  // The path policy first: the system would see "ocean.png\0.json" as
+  // ocean.png, which a ".json" rule checked on the whole text lets through.
+  if (Status text = check_path_text(relative, "path"); !text) return text.error();
   const fs::path path(relative);
-  if (relative.empty() || path.is_absolute())
+  if (path.is_absolute())
     return invalid_input("\"" + relative + "\": expected a path relative to the served folder");
   for (const fs::path& part : path)
     if (part == "..") return invalid_input("\"" + relative + "\": \"..\" may not leave the served folder");

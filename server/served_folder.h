@@ -15,9 +15,10 @@ class ServedFolder {
   // `folder` must exist; it is made canonical (symlinks resolved).
   static Result<ServedFolder> open(const std::string& folder);
 
-  // The file `relative` names inside the folder, or why not: an empty or
-  // absolute path, a ".." component, or a path that leaves the folder
-  // through a symlink. Files need not exist (a save may create one), but
+  // The file `relative` names inside the folder, or why not: a path the
+  // path policy refuses (graph/file_path.h: empty, NUL, control
+  // characters, over-long names), an absolute path, a ".." component, or a
+  // path that leaves the folder through a symlink. Files need not exist (a save may create one), but
   // their folder must.
   Result<std::filesystem::path> resolve(const std::string& relative) const;
 

@@ -11,6 +11,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -35,6 +36,18 @@ const char* const sines_graph = R"({"format": "shadetree-graph", "version": 1, "
             {"id": "c", "op": "to_color", "in": {"v": "s"}}],
   "outputs": {"color": "c"}})";
 
+// A raw TCP connection to 127.0.0.1:port, or -1.
+int connect_to_loopback(int port) {
+  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) return socket;
+  ::close(socket);
+  return -1;
+}
+
 class EditorServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -50,12 +63,11 @@ class EditorServerTest : public ::testing::Test {
     std::ofstream(root_ / "secret.json") << "{\"secret\": true}";
     fs::create_symlink(root_ / "secret.json", root_ / "graphs" / "link.json");
     std::ofstream(root_ / "editor" / "index.html") << "<!doctype html><title>editor</title>";
-    ServeOptions options;
-    options.folder = (root_ / "graphs").string();
-    options.editor_folder = (root_ / "editor").string();
-    options.max_body = 64 * 1024;
-    options.jit.cache_folder = (root_ / "kernel-cache").string();  // every new program compiles
-    Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+    options_.folder = (root_ / "graphs").string();
+    options_.editor_folder = (root_ / "editor").string();
+    options_.max_body = 64 * 1024;
+    options_.jit.cache_folder = (root_ / "kernel-cache").string();  // every new program compiles
+    Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options_);
     ASSERT_TRUE(started.ok()) << started.error().to_string();
     server_ = std::move(*started);
     client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->port());
@@ -90,6 +102,7 @@ class EditorServerTest : public ::testing::Test {
   }
 
   fs::path root_;
+  ServeOptions options_;
   std::unique_ptr<EditorServer> server_;
   std::unique_ptr<httplib::Client> client_;
   httplib::Headers headers_;
@@ -112,6 +125,40 @@ TEST_F(EditorServerTest, EveryRequestNeedsTheToken) {
   EXPECT_EQ(client_->Get("/api/graphs", {{"Cookie", cookie.substr(0, cookie.find(';'))}})->status, 200);
   EXPECT_NE(server_->url().find("http://127.0.0.1:" + std::to_string(server_->port()) + "/?token="),
             std::string::npos);
+}
+
+// Issue 21: the SameSite cookie rides on text/plain POSTs that pages on
+// other local ports make, so another local page could make the server
+// compile and render. The cookie alone now only reads.
+TEST_F(EditorServerTest, TheCookieAloneCannotCompileRenderOrWrite) {
+  const httplib::Headers cookie = {{"Cookie", "shadetree_token=" + server_->token()}};
+  EXPECT_EQ(client_->Get("/api/graphs", cookie)->status, 200);
+  EXPECT_EQ(client_->Get("/api/graph?path=waves.json", cookie)->status, 200);
+  const std::vector<std::pair<std::string, std::string>> costly = {
+      {"POST", "/api/check?path=waves.json"},
+      {"POST", "/api/preview?path=waves.json&width=8&height=8"},
+      {"POST", "/api/export?path=waves.json&width=8&height=8"},
+      {"PUT", "/api/graph?path=forged.json"}};
+  const std::string graph =  // a program of its own, compiled by no other test
+      std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""), "\"frequency\": 4.25");
+  auto send = [&](const std::string& method, const std::string& url, const httplib::Headers& headers) {
+    return method == "PUT" ? client_->Put(url, headers, graph, "text/plain")
+                           : client_->Post(url, headers, graph, "text/plain");
+  };
+  for (const auto& [method, url] : costly) {
+    auto refused = send(method, url, cookie);
+    ASSERT_TRUE(refused) << url;
+    EXPECT_EQ(refused->status, 403) << method << " " << url;
+    EXPECT_NE(error_of(refused).find("X-Shadetree-Token"), std::string::npos);
+  }
+  EXPECT_FALSE(fs::exists(root_ / "graphs" / "forged.json"));
+  auto stats = nlohmann::json::parse(client_->Get("/api/stats", headers_)->body);
+  EXPECT_EQ(stats["previews"], 0);
+  EXPECT_EQ(stats["compiles"], 0);
+  for (const auto& [method, url] : costly) {
+    EXPECT_EQ(send(method, url, headers_)->status, 200) << "with the header: " << url;
+    EXPECT_EQ(send(method, url + "&token=" + server_->token(), cookie)->status, 200) << "with the URL's: " << url;
+  }
 }
 
 // DNS rebinding: a page of evil.example resolving to 127.0.0.1 still says
@@ -167,6 +214,34 @@ TEST_F(EditorServerTest, PathsMayNotLeaveTheServedFolder) {
   EXPECT_FALSE(fs::exists(root_ / "escape.json"));
 }
 
+// Issue 21: "ocean.png%00.json" passed the ".json" rule and overwrote
+// ocean.png; names over 255 bytes got 500.
+TEST_F(EditorServerTest, ANulInAPathCannotSaveOverAnotherFile) {
+  std::ofstream(root_ / "graphs" / "ocean.png") << "image bytes";
+  for (const char* path : {"ocean.png%00.json", "run.sh%00.json", "more/two.json%00", "new%0Aline.json",
+                           "tab%09.json", "escape%1B[31m.json"}) {
+    auto saved = client_->Put(std::string("/api/graph?path=") + path, headers_, "{}", "application/json");
+    ASSERT_TRUE(saved) << path;
+    EXPECT_EQ(saved->status, 400) << path << ": " << saved->body;
+    EXPECT_EQ(client_->Get(std::string("/api/graph?path=") + path, headers_)->status, 400) << path;
+    EXPECT_EQ(client_->Post(std::string("/api/check?path=") + path, headers_, sines_graph, "application/json")->status,
+              400)
+        << path;
+    error_of(saved);
+  }
+  std::ifstream image(root_ / "graphs" / "ocean.png");
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(image)), std::istreambuf_iterator<char>()), "image bytes");
+  EXPECT_FALSE(fs::exists(root_ / "graphs" / "run.sh"));
+  const std::string longest = std::string(250, 'n') + ".json", too_long = "n" + longest;
+  EXPECT_EQ(client_->Put("/api/graph?path=" + longest, headers_, "{}", "application/json")->status, 200);
+  auto refused = client_->Put("/api/graph?path=" + too_long, headers_, "{}", "application/json");
+  EXPECT_EQ(refused->status, 400) << refused->body;
+  EXPECT_NE(error_of(refused).find("255"), std::string::npos);
+  EXPECT_EQ(client_->Put("/api/graph?path=" + std::string(4100, 'a') + ".json", headers_, "{}", "application/json")
+                ->status,
+            400);
+}
+
 TEST_F(EditorServerTest, SavesThroughATemporaryFileWhatCheckAccepts) {
   const std::string edited = std::regex_replace(sines_graph, std::regex("\"default\": 3"), "\"default\": 7");
   auto saved = client_->Put("/api/graph?path=more/saved.json", headers_, edited, "application/json");
@@ -179,6 +254,33 @@ TEST_F(EditorServerTest, SavesThroughATemporaryFileWhatCheckAccepts) {
   EXPECT_EQ(broken->status, 400);
   EXPECT_FALSE(fs::exists(root_ / "graphs" / "broken.json"));
   EXPECT_EQ(client_->Put("/api/graph?path=nowhere/x.json", headers_, "{}", "application/json")->status, 400);
+}
+
+// Issue 21: concurrent saves of one file shared a temporary name, and 6 of
+// 100 failed with 500.
+TEST_F(EditorServerTest, ConcurrentSavesOfOneFileAllSucceed) {
+  const int clients = 8, saves_per_client = 13;
+  std::vector<std::future<std::vector<int>>> statuses;
+  for (int c = 0; c < clients; ++c)
+    statuses.push_back(std::async(std::launch::async, [&, c] {
+      httplib::Client client("127.0.0.1", server_->port());
+      client.set_read_timeout(60);
+      const std::string body = "{\"client\": " + std::to_string(c) + "}";
+      std::vector<int> answered;
+      for (int s = 0; s < saves_per_client; ++s) {
+        auto saved = client.Put("/api/graph?path=contested.json", headers_, body, "application/json");
+        answered.push_back(saved ? saved->status : 0);
+      }
+      return answered;
+    }));
+  for (auto& answered : statuses)
+    for (int status : answered.get()) EXPECT_EQ(status, 200);
+  std::ifstream file(root_ / "graphs" / "contested.json");
+  const auto saved = nlohmann::json::parse(file, nullptr, false);
+  ASSERT_TRUE(saved.is_object()) << "one whole save";
+  EXPECT_TRUE(saved.contains("client"));
+  for (const auto& entry : fs::directory_iterator(root_ / "graphs"))
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
 }
 
 TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
@@ -233,12 +335,8 @@ TEST_F(EditorServerTest, OversizedAndMalformedRequestsGetErrorsAndTheServerLives
   ASSERT_TRUE(large);
   EXPECT_EQ(large->status, 413);
   // Garbage on a raw socket.
-  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(server_->port()));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  const int socket = connect_to_loopback(server_->port());
+  ASSERT_GE(socket, 0);
   const std::string garbage = "\x01\x02 NOT HTTP \r\n\r\n\xff\xfe";
   ASSERT_GT(::write(socket, garbage.data(), garbage.size()), 0);
   char reply[512];
@@ -432,6 +530,81 @@ TEST_F(EditorServerTest, ResidentMemoryStaysFlatOverAThousandGraphEdits) {
   EXPECT_LT(grown, 3L << 20) << "grew by " << grown / 1024 << " KiB over " << edits - warm_up << " edits";
 #endif
   EXPECT_LE(resident_kernel_count(), memory_cache_kernels + 8) << "kernels no one uses leave the JIT";
+}
+
+// Issue 21: ten connections that each sent a header line every 2 s, with
+// no token, blocked every other client (slowloris). Here the slow ones
+// outnumber the server's workers, and are cut at the request deadline.
+TEST_F(EditorServerTest, ANormalRequestIsAnsweredWhileTenSlowConnectionsAreOpen) {
+  ServeOptions options = options_;
+  options.connections.workers = 4;
+  options.connections.request_timeout = std::chrono::milliseconds(1000);
+  Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+  ASSERT_TRUE(started.ok()) << started.error().to_string();
+  const int port = (*started)->port();
+  const httplib::Headers token = {{"X-Shadetree-Token", (*started)->token()}};
+  const int slow_connections = 10;
+  std::atomic<bool> answered{false};
+  std::atomic<int> connected{0}, cut{0};
+  std::vector<std::thread> slow;
+  for (int i = 0; i < slow_connections; ++i)
+    slow.emplace_back([&] {
+      const int socket = connect_to_loopback(port);
+      ++connected;
+      if (socket < 0) return;
+      const std::string start = "GET /api/graphs HTTP/1.1\r\n";
+      ::send(socket, start.data(), start.size(), MSG_NOSIGNAL);
+      // A header line every 200 ms (well within each read's timeout), for
+      // as long as the normal request waits, up to a minute.
+      for (int line = 0; line < 300 && !answered; ++line) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        if (::send(socket, "X-Slow: 1\r\n", 11, MSG_NOSIGNAL) < 0) {
+          ++cut;
+          break;
+        }
+      }
+      ::close(socket);
+    });
+  while (connected < slow_connections) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  httplib::Client client("127.0.0.1", port);
+  client.set_connection_timeout(60);
+  client.set_read_timeout(60);
+  auto result = client.Get("/api/graphs", token);
+  answered = true;
+  for (std::thread& thread : slow) thread.join();
+  ASSERT_TRUE(result) << "no answer while the slow connections were open";
+  EXPECT_EQ(result->status, 200);
+  EXPECT_GT(cut.load(), 0) << "the slow connections are cut, not served";
+}
+
+TEST_F(EditorServerTest, ConnectionsPastTheCapAreRefusedAtOnce) {
+  ServeOptions options = options_;
+  options.connections.workers = 1;
+  options.connections.max_connections = 2;
+  Result<std::unique_ptr<EditorServer>> started = EditorServer::start(options);
+  ASSERT_TRUE(started.ok()) << started.error().to_string();
+  const int served = connect_to_loopback((*started)->port()), waiting = connect_to_loopback((*started)->port());
+  const int refused = connect_to_loopback((*started)->port());
+  ASSERT_GE(refused, 0);
+  char reply[256] = "";
+  const ssize_t read = ::recv(refused, reply, sizeof reply - 1, 0);  // the server closes it at once
+  EXPECT_EQ(std::string(reply, std::max<ssize_t>(read, 0)).substr(0, 12), "HTTP/1.1 503");
+  for (int socket : {served, waiting, refused}) ::close(socket);
+}
+
+// Issue 21 reported 65 kernels where the README promises the 64 most
+// recently used: kernels in use by a compile or render under way are
+// resident besides those; once they end, exactly 64 remain.
+TEST_F(EditorServerTest, StatsReportTheDocumentedSixtyFourKernelsOnceCompilesEnd) {
+  for (int n = 0; n < memory_cache_kernels + 8; ++n) {
+    const std::string graph = std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""),
+                                                 "\"frequency\": " + std::to_string(2.0 + n * 1e-3));
+    ASSERT_EQ(client_->Post("/api/preview?path=waves.json&width=8&height=8", headers_, graph, "application/json")
+                  ->status,
+              200);
+  }
+  wait_for_background_compiles();
+  EXPECT_EQ(nlohmann::json::parse(client_->Get("/api/stats", headers_)->body)["kernels"], memory_cache_kernels);
 }
 
 }  // namespace
