@@ -27,6 +27,7 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 }  // namespace
 
 Status check_output_folder(const std::string& path) {
+  if (Status text = check_path_text(path, "output"); !text) return text;
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::error_code error;
   if (!folder.empty() && !std::filesystem::is_directory(folder, error))
@@ -35,6 +36,7 @@ Status check_output_folder(const std::string& path) {
 }
 
 Status write_then_rename(const std::string& path, const std::function<std::string(const std::string&)>& write) {
+  if (Status text = check_path_text(path, "output"); !text) return text;
   const std::filesystem::path target(path);
   const std::filesystem::path temporary = temporary_name(target);
   const std::string problem = write(temporary.string());

@@ -1,6 +1,9 @@
 #include "server/editor_server.h"
 
 #include <httplib.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +39,19 @@ std::string random_token() {
     token << part;
   }
   return token.str();
+}
+
+// glibc gives each thread that allocates an arena of its own, up to eight
+// per core, and each keeps its high-water mark: a server whose 32 workers
+// take turns serving edits grew by megabytes over a day's edits without
+// holding anything. Two arenas a core keep its memory flat (measured with
+// EditorServerTest.ResidentMemoryStaysFlatOverAThousandGraphEdits), at the
+// cost of some contention between the few threads that allocate at once.
+void keep_the_heap_flat() {
+#ifdef __GLIBC__
+  static const bool set = mallopt(M_ARENA_MAX, 2 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  (void)set;
+#endif
 }
 
 // Equal strings, in time that does not depend on where they differ.
@@ -145,6 +161,7 @@ Result<std::unique_ptr<EditorServer>> EditorServer::start(const ServeOptions& re
     error.message = "the editor's files are missing (run scripts/build.sh, which installs them with npm ci)";
     return error;
   }
+  keep_the_heap_flat();
   std::unique_ptr<EditorServer> server(new EditorServer(options, std::move(*graphs), std::move(*editor)));
   server->add_routes();
   server->server_->set_payload_max_length(options.max_body);

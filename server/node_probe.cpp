@@ -5,7 +5,7 @@
 #include <set>
 #include <vector>
 
-#include "graph/json_reader.h"  // json: objects in file order, as a function's outputs must be
+#include "graph/json_document.h"  // objects in file order, as a function's outputs must be
 #include "graph/parse.h"
 #include "graph/parse_volume.h"
 
@@ -41,7 +41,9 @@ std::string fresh_name(const json& taken, const std::string& base) {
 // call's id.
 Result<std::pair<json, std::string>> call_of_function_node(const std::string& text, const std::string& file,
                                                             const std::string& function, const std::string& node) {
-  json document = json::parse(text, nullptr, false);
+  Result<json> parsed = parse_json_document(text, file);
+  if (!parsed) return parsed.error();
+  json& document = *parsed;
   if (!document.is_object() || !document.contains("functions") || !document["functions"].is_object() ||
       !document["functions"].contains(function))
     return Diagnostic{ExitStatus::invalid_input, file, {}, {}, "no function \"" + function + "\""};
@@ -113,7 +115,9 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
     for (const CheckedSource& source : next->inputs)
       if (source.kind == CheckedSource::Kind::node) pending.push_back(&checked->main.nodes[source.index]);
   }
-  json document = json::parse(text);
+  Result<json> read = parse_json_document(text, file);
+  if (!read) return read.error();
+  json& document = *read;
   json& nodes = document["nodes"];
   nodes.erase(std::remove_if(nodes.begin(), nodes.end(),
                              [&](const json& node) { return !upstream.contains(node.value("id", std::string())); }),

@@ -13,6 +13,7 @@
 #include "graph/parse.h"
 #include "render/image_output.h"
 #include "render/mesh.h"
+#include "render/output_file.h"
 #include "render/resource_path.h"
 #include "render/vdb_file.h"
 
@@ -47,9 +48,11 @@ TEST(CheckPathText, RefusesNulControlCharactersAndOverLongNames) {
   }
 }
 
-// Each site given a path that names an existing file once the NUL cuts it:
-// a site that checked only the text after the NUL would open that file.
-TEST(FilePathPolicy, EverySiteThatOpensAFileRefusesANulInItsPath) {
+// Each site given a path holding a NUL: one that checked only the text
+// after the NUL would open or write the file the NUL cuts it to. The
+// editor server's routes go through ServedFolder::resolve, tested in
+// EditorServerTest.ANulInAPathCannotSaveOverAnotherFile.
+TEST(FilePathPolicy, EverySiteThatOpensOrWritesAFileRefusesANulInItsPath) {
   const fs::path folder = fs::temp_directory_path() / ("shadetree-file-path-" + std::to_string(::getpid()));
   fs::create_directories(folder);
   const std::string real = (folder / "real").string();
@@ -60,6 +63,9 @@ TEST(FilePathPolicy, EverySiteThatOpensAFileRefusesANulInItsPath) {
       {"load_mesh", [&] { return load_mesh(cut).error(); }},
       {"read_image", [&] { return read_image(cut).error(); }},
       {"read_vdb", [&] { return read_vdb(cut).error(); }},
+      {"write_image", [&] { return write_image(Image{1, 1, 1, {0.5f}}, cut + ".png").error(); }},
+      {"write_vdb", [&] { return write_vdb(VoxelGrid{}, cut + ".vdb").error(); }},
+      {"check_output_folder", [&] { return check_output_folder(cut).error(); }},
   };
   for (const auto& [site, refuse] : sites) {
     const Diagnostic error = refuse();
