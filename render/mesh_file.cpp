@@ -1,11 +1,13 @@
 // Mesh files through Assimp: OBJ and PLY are what the tests cover; any
 // other format Assimp reads loads too. Every mesh of the file is
 // flattened into one triangle list in the file's space.
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
@@ -75,7 +77,10 @@ std::string mesh_text_problem(const std::string& path, std::uintmax_t bytes) {
   const std::string too_many_vertices = "mesh has more than " + std::to_string(max_mesh_vertices) + " vertices";
   if (std::getline(file, line) && line.rfind("ply", 0) == 0) {
     for (int lines = 0; lines < 10000 && std::getline(file, line); ++lines) {
-      if (line.rfind("end_header", 0) == 0) return {};
+      // Exactly that word: Assimp never returns on "end_header" followed by
+      // anything but white space, as on no end_header at all.
+      while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+      if (line == "end_header") return {};
       if (line.rfind("element ", 0) != 0) continue;
       std::istringstream words(line.substr(8));
       std::string element;
@@ -126,8 +131,29 @@ Result<TriangleMesh> load_mesh(const std::string& path) {
   importer.SetIOHandler(new MeshFileOnly(path));  // the importer owns it
   // Only triangles; no points or lines.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType |
-                                                     aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  if (!scene || !scene->mRootNode)
+    return mesh_error(path, ExitStatus::invalid_input, std::string("cannot read mesh: ") + importer.GetErrorString());
+  // A malformed file can leave faces without corners in a mesh marked as
+  // holding polygons (a PLY with an unknown property type did), on which
+  // Assimp's triangulation asserts and so aborts the process: they are
+  // dropped, and the mesh's primitive types taken from the faces left.
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    aiMesh& mesh = *scene->mMeshes[m];
+    unsigned kept = 0, types = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const unsigned corners = mesh.mFaces[f].mNumIndices;
+      if (corners == 0) continue;
+      types |= corners == 1   ? aiPrimitiveType_POINT
+               : corners == 2 ? aiPrimitiveType_LINE
+               : corners == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+      std::swap(mesh.mFaces[kept++], mesh.mFaces[f]);
+    }
+    mesh.mNumFaces = kept;
+    mesh.mPrimitiveTypes = types;
+  }
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
   if (!scene || !scene->mRootNode)
     return mesh_error(path, ExitStatus::invalid_input, std::string("cannot read mesh: ") + importer.GetErrorString());
 

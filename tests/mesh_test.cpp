@@ -128,6 +128,9 @@ TEST_F(MeshFiles, TooManyTrianglesAndTruncatedHeadersAreRefusedBeforeLoading) {
   // (9999999 here, under the vertex limit).
   expect_error_naming(load_mesh(write("unended.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n")),
                       "unended.ply", "PLY header has no end_header");
+  expect_error_naming(load_mesh(write("misended.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                                      "end_header\x93\n0\n1\n2\n")),
+                      "misended.ply", "PLY header has no end_header");
   expect_error_naming(load_mesh(write("declared.ply",
                                       "ply\nformat binary_little_endian 1.0\nelement vertex 9999999\n"
                                       "property float x\nproperty float y\nproperty float z\nend_header\n")),
@@ -137,6 +140,21 @@ TEST_F(MeshFiles, TooManyTrianglesAndTruncatedHeadersAreRefusedBeforeLoading) {
   for (int i = 0; i < 5000003; ++i) faces += " 1";
   faces += "\n";
   expect_error_naming(load_mesh(write("fans.obj", faces)), "fans.obj", "more than 5000000 triangles");
+}
+
+// The file fuzzer's first find: a PLY with an unknown property type left a
+// face without corners in a mesh marked as holding polygons, on which
+// Assimp's triangulation asserted and aborted shadetree (exit 134).
+TEST_F(MeshFiles, APlyWithAnUnknownPropertyTypeIsAnErrorNotAnAbort) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty flovtany\nproperty float nz\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  const std::string body =
+      "00000000000000000000000000000000000000000000803f00000040000000000000000000000000000000000000803f000000000000"
+      "00400000000000000000000000000000803f03000000000100000002000000";
+  for (std::size_t i = 0; i < body.size(); i += 2) ply += static_cast<char>(std::stoi(body.substr(i, 2), nullptr, 16));
+  expect_error_naming(load_mesh(write("unknown-type.ply", ply)), "unknown-type.ply", "cannot read mesh");
 }
 
 // Issue 21: a mesh of one point given as --object aborted inside Embree
