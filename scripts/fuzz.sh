@@ -6,8 +6,8 @@
 #   functions, every global) and the corpus earlier runs left in
 #   build-fuzz/corpus;
 # - fuzz/file_fuzzer.cpp over the image files graphs pull in and the paths
-#   requests name (mesh files too with SHADETREE_FUZZ_MESHES=1: Assimp
-#   still aborts on some), for FILE_SECONDS (default half of SECONDS),
+#   requests name (mesh files too with SHADETREE_FUZZ_MESHES=1, for long
+#   runs: Assimp is slow), for FILE_SECONDS (default half of SECONDS),
 #   from fuzz/file_seeds and build-fuzz/file_corpus.
 # A crash, a sanitizer report, a verifier failure or a JIT/interpreter
 # mismatch stops it with a non-zero status and leaves the input in
