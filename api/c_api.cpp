@@ -14,9 +14,9 @@
 #include "nodes/globals.h"
 #include "nodes/output_contract.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
-#include "render/image_output.h"
-#include "render/texture_driver.h"
+#include "io/graph_files.h"
+#include "io/image_output.h"
+#include "render/graph_kinds.h"
 
 struct shadetree_graph {
   shadetree::LoadedGraph loaded;
@@ -175,21 +175,17 @@ shadetree_status shadetree_run(shadetree_graph* graph, float frame, const float*
   });
 }
 
-shadetree_status shadetree_render_texture(shadetree_graph* graph, int width, int height, float frame, float* rgba) {
-  if (!graph || !rgba)
-    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: graph and rgba must not be NULL");
-  if (graph->loaded.graph->kind != GraphKind::texture)
-    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: " + graph->loaded.graph->file + " is a " +
-                                                    shadetree_kind(graph) + " graph, not a texture graph");
+shadetree_status shadetree_render(shadetree_graph* graph, int width, int height, float frame, float* rgba) {
+  if (!graph || !rgba) return fail_with(ExitStatus::invalid_input, "shadetree_render: graph and rgba must not be NULL");
   if (width < 1 || height < 1 || width > max_image_side || height > max_image_side)
-    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: each side must be between 1 and " +
-                                                    std::to_string(max_image_side));
+    return fail_with(ExitStatus::invalid_input,
+                     "shadetree_render: each side must be between 1 and " + std::to_string(max_image_side));
   return guarded([&] {
-    TextureView view = TextureView::from_settings(graph->loaded.graph->render);
-    view.width = width;
-    view.height = height;
-    view.frame = frame;
-    Result<Image> image = render_texture(*graph->kernel, graph->loaded.params, view, {});
+    RenderRequest request;
+    request.size = {width, height};
+    Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*graph->loaded.graph, request);
+    if (!renderer) return fail(renderer.error());
+    Result<Image> image = (*renderer)->render(*graph->kernel, graph->loaded.params, frame, {}, nullptr);
     if (!image) return fail(image.error());
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     for (std::size_t i = 0; i < pixels; ++i)
@@ -197,6 +193,13 @@ shadetree_status shadetree_render_texture(shadetree_graph* graph, int width, int
         rgba[4 * i + c] = c < image->channels ? image->pixels[i * image->channels + c] : 1.0f;
     return succeed();
   });
+}
+
+shadetree_status shadetree_render_texture(shadetree_graph* graph, int width, int height, float frame, float* rgba) {
+  if (graph && graph->loaded.graph->kind != GraphKind::texture)
+    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: " + graph->loaded.graph->file + " is a " +
+                                                    shadetree_kind(graph) + " graph, not a texture graph");
+  return shadetree_render(graph, width, height, frame, rgba);
 }
 
 shadetree_status shadetree_write_image(const char* path, const float* pixels, int width, int height, int channels) {

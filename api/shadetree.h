@@ -82,9 +82,14 @@ int shadetree_output_plane_count(const shadetree_graph* graph);
 shadetree_status shadetree_run(shadetree_graph* graph, float frame, const float* const* inputs,
                                float* const* outputs, size_t count);
 
-/* A texture graph over its render domain at width x height, at `frame`:
- * RGBA floats, row by row from the top (alpha 1 where the graph has none),
- * into `rgba` (4 * width * height floats). On all cores. */
+/* A graph of any kind through its driver, as `shadetree render` renders
+ * it (a texture over its render domain, a surface graph on its scene or
+ * the preview sphere, a volume through the ray marcher) at width x height,
+ * at `frame`: RGBA floats, row by row from the top (alpha 1 where the
+ * graph has none), into `rgba` (4 * width * height floats). On all cores. */
+shadetree_status shadetree_render(shadetree_graph* graph, int width, int height, float frame, float* rgba);
+
+/* As shadetree_render, refusing graphs that are not textures. */
 shadetree_status shadetree_render_texture(shadetree_graph* graph, int width, int height, float frame, float* rgba);
 
 /* Writes pixels (channels 1 to 4, interleaved, rows from the top) to a

@@ -3,13 +3,14 @@
 // one thread and at all threads, as medians of repeated runs after a
 // warm-up. Samples are the texture driver's (a WxH grid over the graph's
 // render domain), fed straight to the kernel so that every graph kind can
-// be measured. Surface graphs are also rendered by the surface driver on
-// their scene, with the time of each stage and the shading stage's
-// throughput against the kernel's own on the texture samples; volume
-// graphs by the ray marcher, with its density throughput and lane use.
+// be measured. Graphs of the kinds whose drivers do more than run the
+// kernel (surface, volume) are also rendered by their driver, with the
+// figures it reports and its kernel throughput against the kernel's own
+// on the texture samples.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <tuple>
 
@@ -21,15 +22,13 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "graph/parse_volume.h"
-#include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
 #include "interp/interpreter.h"
+#include "io/graph_files.h"
 #include "jit/jit_kernel.h"
-#include "render/preview_scene.h"
-#include "render/surface_driver.h"
+#include "pipeline/compile_graph.h"
+#include "render/graph_kinds.h"
 #include "render/texture_driver.h"
-#include "render/thread_bindings.h"
-#include "render/volume_driver.h"
+#include "schedule/thread_bindings.h"
 
 namespace shadetree {
 
@@ -92,30 +91,6 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Uni
   return static_cast<double>(samples.count) / seconds[seconds.size() / 2];
 }
 
-// A driver's render: its statistics (stage times in seconds of thread
-// time) and its wall time, for the run with the median wall time of
-// `repetitions` after one warm-up run.
-template <class Stats>
-struct Timing {
-  Stats stats;
-  double seconds = 0;
-};
-
-template <class Stats, class Render>
-Timing<Stats> median_render(int repetitions, Render render) {
-  std::vector<Timing<Stats>> runs;
-  for (int r = 0; r <= repetitions; ++r) {
-    Timing<Stats> timing;
-    const auto start = std::chrono::steady_clock::now();
-    render(timing.stats);
-    timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (r > 0) runs.push_back(timing);
-  }
-  std::nth_element(runs.begin(), runs.begin() + runs.size() / 2, runs.end(),
-                   [](const Timing<Stats>& a, const Timing<Stats>& b) { return a.seconds < b.seconds; });
-  return runs[runs.size() / 2];
-}
-
 // The backends a driver is measured with, and each one's kernel rate on
 // the texture samples (1 thread), which the driver's rate is compared to.
 struct MeasuredBackend {
@@ -124,82 +99,56 @@ struct MeasuredBackend {
   double kernel_sps;
 };
 
-// The surface driver on the graph's scene (or the preview sphere).
-Status bench_surface(const LoadedGraph& loaded, const std::string& file, const TextureView& view,
-                     const std::vector<MeasuredBackend>& backends, const BenchArguments& arguments,
-                     nlohmann::ordered_json& results, std::vector<std::string>& rows) {
-  Result<Scene> scene = Scene::build(
-      loaded.graph->render.scene ? *loaded.graph->render.scene : SceneDesc(*preview_scene("sphere")), file, {});
-  if (!scene) return scene.error();
-  SurfaceView surface_view;
-  surface_view.width = view.width;
-  surface_view.height = view.height;
-  const Camera camera(scene->desc().camera, view.width, view.height);
-  for (const MeasuredBackend& backend : backends)
-    for (int threads : {1, arguments.threads}) {
-      SurfaceRenderOptions options;
-      options.threads = threads;
-      const auto timing = median_render<SurfaceRenderStats>(arguments.repetitions, [&](SurfaceRenderStats& stats) {
-        render_surface(*backend.kernel, loaded.params, *scene, camera, surface_view, options, &stats);
-      });
-      const double shading_sps = static_cast<double>(timing.stats.visible_samples) / timing.stats.shading_seconds;
-      results.push_back({{"backend", backend.name},
-                         {"threads", threads},
-                         {"visible_samples", timing.stats.visible_samples},
-                         {"visibility_s", timing.stats.visibility_seconds},
-                         {"shading_s", timing.stats.shading_seconds},
-                         {"lighting_s", timing.stats.lighting_seconds},
-                         {"total_s", timing.seconds},
-                         {"shading_sps", shading_sps},
-                         {"shading_vs_kernel", shading_sps / backend.kernel_sps}});
-      char row[256];
-      std::snprintf(row, sizeof row, "%-16s %-7s %7s %9ld %9.3f %9.3f %9.3f %9.3f %9.2fM %8.2fx",
-                    loaded.graph->name.c_str(), backend.name, threads == 1 ? "1" : "all",
-                    timing.stats.visible_samples, timing.stats.visibility_seconds, timing.stats.shading_seconds,
-                    timing.stats.lighting_seconds, timing.seconds, shading_sps / 1e6, shading_sps / backend.kernel_sps);
-      rows.push_back(row);
-    }
-  return success();
-}
+// A driver's measurements of one graph: a JSON object and a table row per
+// backend and thread count.
+struct DriverRows {
+  std::vector<std::string> names;  // of the figures, for the table's heading
+  std::vector<std::string> rows;
+};
 
-// The ray marcher on the graph's volume and scene.
-Status bench_volume(const LoadedGraph& loaded, const std::string& file, const TextureView& view,
-                    const std::vector<MeasuredBackend>& backends, const BenchArguments& arguments,
-                    nlohmann::ordered_json& results, std::vector<std::string>& rows) {
-  if (!loaded.graph->render.volume) return invalid_input(file + ": a volume graph needs render.volume to be marched");
-  const SceneDesc desc = volume_scene(loaded.graph->render.scene);
-  Result<Scene> scene = Scene::build(desc, file, {});
-  if (!scene) return scene.error();
-  VolumeView volume_view;
-  volume_view.width = view.width;
-  volume_view.height = view.height;
-  const Camera camera(desc.camera, view.width, view.height);
+// The graph's driver (the kinds table) at the bench's size: its figures
+// from the run with the median wall time of `repetitions` after one
+// warm-up, and its kernel throughput against the kernel's own on the
+// texture samples.
+Status bench_driver(const LoadedGraph& loaded, const TextureView& view, const std::vector<MeasuredBackend>& backends,
+                    const BenchArguments& arguments, nlohmann::ordered_json& results, DriverRows& table) {
+  RenderRequest request;
+  request.size = {view.width, view.height};
+  request.lane_width = host_vector_width();
   for (const MeasuredBackend& backend : backends)
     for (int threads : {1, arguments.threads}) {
-      VolumeRenderOptions options;
-      options.threads = threads;
-      options.lane_width = host_vector_width();
-      const auto timing = median_render<VolumeRenderStats>(arguments.repetitions, [&](VolumeRenderStats& stats) {
-        render_volume(*backend.kernel, loaded.params, *scene, *loaded.graph->render.volume, camera, volume_view,
-                      options, &stats);
-      });
-      const double density_sps = static_cast<double>(timing.stats.density_samples) / timing.stats.kernel_seconds;
-      results.push_back({{"backend", backend.name},
-                         {"threads", threads},
-                         {"rays", timing.stats.rays},
-                         {"density_samples", timing.stats.density_samples},
-                         {"lane_utilisation", timing.stats.lane_utilisation()},
-                         {"kernel_s", timing.stats.kernel_seconds},
-                         {"march_s", timing.stats.march_seconds},
-                         {"total_s", timing.seconds},
-                         {"density_sps", density_sps},
-                         {"density_vs_kernel", density_sps / backend.kernel_sps}});
-      char row[256];
-      std::snprintf(row, sizeof row, "%-16s %-7s %7s %11ld %7.1f%% %9.3f %9.3f %9.3f %9.2fM %8.2fx",
-                    loaded.graph->name.c_str(), backend.name, threads == 1 ? "1" : "all",
-                    timing.stats.density_samples, 100.0 * timing.stats.lane_utilisation(), timing.stats.kernel_seconds,
-                    timing.stats.march_seconds, timing.seconds, density_sps / 1e6, density_sps / backend.kernel_sps);
-      rows.push_back(row);
+      request.threads = threads;
+      Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded.graph, request);
+      if (!renderer) return renderer.error();
+      std::vector<FrameReport> runs;
+      for (int r = 0; r <= arguments.repetitions; ++r) {
+        FrameReport report;
+        Result<Image> image = (*renderer)->render(*backend.kernel, loaded.params, view.frame, {}, &report);
+        if (!image) return image.error();
+        if (r > 0) runs.push_back(std::move(report));
+      }
+      std::nth_element(runs.begin(), runs.begin() + runs.size() / 2, runs.end(),
+                       [](const FrameReport& a, const FrameReport& b) { return a.seconds < b.seconds; });
+      const FrameReport& report = runs[runs.size() / 2];
+      const double seconds = report.seconds;
+      const double kernel_sps = static_cast<double>(report.kernel_samples) / report.kernel_seconds;
+      nlohmann::ordered_json result = {{"backend", backend.name}, {"threads", threads}};
+      char row[512];
+      int length = std::snprintf(row, sizeof row, "%-16s %-7s %7s", loaded.graph->name.c_str(), backend.name,
+                                 threads == 1 ? "1" : "all");
+      table.names.clear();
+      for (const auto& [name, value] : report.figures) {
+        result[name] = value;
+        table.names.push_back(name);
+        length += std::snprintf(row + length, sizeof row - length, " %16.6g", value);
+      }
+      result["total_s"] = seconds;
+      result["kernel_sps"] = kernel_sps;
+      result["kernel_vs_texture_samples"] = kernel_sps / backend.kernel_sps;
+      std::snprintf(row + length, sizeof row - length, " %9.3f %9.2fM %8.2fx", seconds, kernel_sps / 1e6,
+                    kernel_sps / backend.kernel_sps);
+      results.push_back(result);
+      table.rows.push_back(row);
     }
   return success();
 }
@@ -217,7 +166,7 @@ ExitStatus bench(const BenchArguments& arguments) {
   if (!arguments.json)
     std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
                 "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
-  std::vector<std::string> surface_rows, volume_rows;
+  std::map<GraphKind, DriverRows> driver_rows;
   for (const std::string& file : arguments.files) {
     Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files());
     if (!loaded) return report(loaded.error());
@@ -256,12 +205,8 @@ ExitStatus bench(const BenchArguments& arguments) {
     const std::string name = loaded->graph->name;
     nlohmann::ordered_json driver = nlohmann::json::array();
     const std::vector<MeasuredBackend> backends = {{"jit", jit->get(), jit_1t}, {"interp", interp.get(), interp_1t}};
-    if (loaded->graph->kind == GraphKind::surface) {
-      Status measured = bench_surface(*loaded, file, *view, backends, arguments, driver, surface_rows);
-      if (!measured) return report(measured.error());
-    }
-    if (loaded->graph->kind == GraphKind::volume) {
-      Status measured = bench_volume(*loaded, file, *view, backends, arguments, driver, volume_rows);
+    if (graph_kind_driver(loaded->graph->kind).bench_driver) {
+      Status measured = bench_driver(*loaded, *view, backends, arguments, driver, driver_rows[loaded->graph->kind]);
       if (!measured) return report(measured.error());
     }
     if (arguments.json) {
@@ -275,7 +220,7 @@ ExitStatus bench(const BenchArguments& arguments) {
                          {"interp_sps_mt", interp_mt},
                          {"jit_sps_1t", jit_1t},
                          {"jit_sps_mt", jit_mt},
-                         {loaded->graph->kind == GraphKind::volume ? "volume_driver" : "surface_driver", driver}});
+                         {"driver", driver}});
     } else {
       char cached_text[32] = "-";
       if (cached_milliseconds) std::snprintf(cached_text, sizeof cached_text, "%.3f", *cached_milliseconds);
@@ -287,19 +232,16 @@ ExitStatus bench(const BenchArguments& arguments) {
   }
   if (arguments.json) {
     std::printf("%s\n", results.dump(2).c_str());
-  } else if (!surface_rows.empty()) {
-    // Stage times are thread time summed over threads; total is wall time.
-    std::printf("\nsurface driver (stage times: thread seconds; shading throughput vs the kernel's 1-thread rate)\n");
-    std::printf("%-16s %-7s %7s %9s %9s %9s %9s %9s %10s %9s\n", "graph", "backend", "threads", "visible",
-                "visib. s", "shading s", "light. s", "total s", "shading", "vs kernel");
-    for (const std::string& row : surface_rows) std::printf("%s\n", row.c_str());
+    return ExitStatus::ok;
   }
-  if (!arguments.json && !volume_rows.empty()) {
-    std::printf("\nray marcher (kernel and march: thread seconds; density throughput vs the kernel's 1-thread rate on "
-                "the texture samples)\n");
-    std::printf("%-16s %-7s %7s %11s %8s %9s %9s %9s %10s %9s\n", "graph", "backend", "threads", "samples", "lanes",
-                "kernel s", "march s", "total s", "density", "vs kernel");
-    for (const std::string& row : volume_rows) std::printf("%s\n", row.c_str());
+  // Figures in seconds are thread time summed over threads; total is wall time.
+  for (const auto& [kind, table] : driver_rows) {
+    std::printf("\n%s driver (seconds of thread time but total; kernel throughput vs the kernel's 1-thread rate on "
+                "the texture samples)\n%-16s %-7s %7s",
+                std::string(graph_kind_name(kind)).c_str(), "graph", "backend", "threads");
+    for (const std::string& name : table.names) std::printf(" %16s", name.c_str());
+    std::printf(" %9s %10s %9s\n", "total s", "kernel", "vs kernel");
+    for (const std::string& row : table.rows) std::printf("%s\n", row.c_str());
   }
   return ExitStatus::ok;
 }

@@ -1,12 +1,15 @@
-// shadetree check FILE...: parse and type-check graphs without running them.
+// shadetree check FILE...: parse and type-check graphs without running
+// them, and set up each one's driver (render/graph_kinds.h) as render
+// would, scene files and all, so that check refuses what render would.
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
 #include "cli/arguments.h"
+#include "io/graph_files.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
+#include "render/graph_kinds.h"
 
 namespace shadetree {
 
@@ -21,8 +24,12 @@ void add_check_command(CLI::App& app, CommandRunner& run) {
       ExitStatus worst = ExitStatus::ok;
       for (const std::string& file : *files) {
         Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files(*search_paths));
-        if (!loaded) {
-          const ExitStatus status = report(loaded.error());
+        RenderRequest request;
+        request.search_paths = *search_paths;
+        Result<std::unique_ptr<FrameRenderer>> renderer =
+            loaded ? prepare_render(*loaded->graph, request) : loaded.error();
+        if (!renderer) {
+          const ExitStatus status = report(renderer.error());
           if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
           continue;
         }

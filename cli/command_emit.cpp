@@ -13,8 +13,8 @@
 #include "cppgen/emit_cpp.h"
 #include "graph/generated_names.h"
 #include "pipeline/compile_graph.h"
-#include "render/output_file.h"
-#include "render/graph_files.h"
+#include "io/output_file.h"
+#include "io/graph_files.h"
 #include "jit/jit_compiler.h"
 
 namespace shadetree {

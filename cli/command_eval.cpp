@@ -8,7 +8,7 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
+#include "io/graph_files.h"
 #include "interp/interpreter.h"
 #include "render/texture_driver.h"
 

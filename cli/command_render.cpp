@@ -10,16 +10,12 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "graph/parse_volume.h"
+#include "io/graph_files.h"
+#include "io/image_output.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
 #include "pipeline/tiered_kernel.h"
-#include "render/image_output.h"
-#include "render/preview_scene.h"
-#include "render/progress.h"
-#include "render/surface_driver.h"
-#include "render/texture_driver.h"
-#include "render/volume_driver.h"
+#include "render/graph_kinds.h"
+#include "schedule/progress.h"
 
 namespace shadetree {
 
@@ -48,142 +44,24 @@ std::string milliseconds_text(double milliseconds) {
   return text;
 }
 
-// One frame of the graph's driver into an image, and what to say of it.
-using FrameRenderer = std::function<Result<Image>(float frame, std::string* summary)>;
-
-// A surface graph's scene: --object's preview object, else the graph's
-// scene, else the preview sphere.
-Result<Scene> surface_scene(const Graph& graph, const RenderArguments& arguments) {
-  std::vector<std::string> search_paths = arguments.search_paths;
-  Result<SceneDesc> desc = surface_scene_desc(graph);
-  if (!arguments.object.empty()) {
-    desc = preview_scene(arguments.object);
-    // A mesh named on the command line is the user's own choice of file.
-    if (desc && desc->objects[0].type == ObjectType::mesh)
-      search_paths.push_back(std::filesystem::path(desc->objects[0].mesh_file).parent_path().string());
+// The request of the command line's options; a graph's kind takes some
+// of them (render/graph_kinds.h).
+Result<RenderRequest> render_request(const RenderArguments& arguments) {
+  RenderRequest request;
+  if (!arguments.size.empty()) {
+    Result<std::pair<int, int>> size = parse_size(arguments.size);
+    if (!size) return size.error();
+    request.size = *size;
   }
-  if (!desc) return desc.error();
-  return Scene::build(*desc, graph.file, search_paths);
-}
-
-// A volume graph's frames, through the ray marcher, on the graph's scene
-// (camera, lights, background) or the default one.
-Result<FrameRenderer> volume_frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
-                                            const RenderArguments& arguments) {
-  const Graph& graph = *loaded.graph;
-  if (!arguments.object.empty() || arguments.samples_per_pixel != 1)
-    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                      "--object and --spp are for surface graphs; this is a volume graph"};
-  if (!graph.render.volume)
-    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                      "a volume graph needs render.volume with \"bounds\" to be rendered (a volume must be bounded)"};
-  const VolumeDesc volume = *graph.render.volume;
-  if (arguments.step)
-    if (std::string problem = step_problem(volume, *arguments.step, "--step"); !problem.empty())
-      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, problem};
-  const SceneDesc desc = volume_scene(graph.render.scene);
-  auto scene = std::make_shared<Result<Scene>>(Scene::build(desc, graph.file, arguments.search_paths));
-  if (!*scene) return (*scene).error();
-  Result<std::pair<int, int>> size = image_size(graph, arguments.size);
-  if (!size) return size.error();
-  VolumeView view;
-  std::tie(view.width, view.height) = *size;
-  auto camera = std::make_shared<Camera>(desc.camera, view.width, view.height);
-  return FrameRenderer([&, scene, camera, view, volume](float frame, std::string* summary) {
-    VolumeView frame_view = view;
-    frame_view.frame = frame;
-    ProgressReporter progress("marching " + arguments.file, "tiles", "rays");
-    VolumeRenderOptions options;
-    options.threads = arguments.threads;
-    options.step = arguments.step.value_or(0.0f);
-    options.shadows = !arguments.no_shadows;
-    if (arguments.jitter) options.jitter = true;
-    options.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
-    options.progress = progress.callback();
-    VolumeRenderStats stats;
-    const auto start = std::chrono::steady_clock::now();
-    Result<Image> image = render_volume(kernel, loaded.params, **scene, volume, *camera, frame_view, options, &stats);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char text[320];
-    std::snprintf(text, sizeof text,
-                  "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadows) in %.3f s (thread time: "
-                  "kernel %.3f s = %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
-                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
-                  stats.shadow_samples, seconds,
-                  stats.kernel_seconds,
-                  stats.kernel_seconds > 0 ? static_cast<double>(stats.density_samples) / stats.kernel_seconds / 1e6
-                                           : 0.0,
-                  100.0 * stats.lane_utilisation(), options.lane_width, stats.march_seconds);
-    *summary = text;
-    return image;
-  });
-}
-
-Result<FrameRenderer> frame_renderer(const LoadedGraph& loaded, const Kernel& kernel,
-                                     const RenderArguments& arguments) {
-  const Graph& graph = *loaded.graph;
-  if (graph.kind != GraphKind::volume && (arguments.step || arguments.jitter))
-    return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {}, "--step and --jitter are for volume graphs"};
-  if (graph.kind == GraphKind::texture) {
-    if (!arguments.object.empty() || arguments.samples_per_pixel != 1 || arguments.no_shadows)
-      return Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                        "--object, --spp and --no-shadows are for surface graphs; this is a texture graph"};
-    Result<TextureView> view = texture_view(graph, arguments.size, arguments.frame);
-    if (!view) return view.error();
-    return FrameRenderer([&, view = *view](float frame, std::string* summary) {
-      TextureView frame_view = view;
-      frame_view.frame = frame;
-      ProgressReporter progress("rendering " + arguments.file, "tiles", "samples");
-      TextureRenderOptions options;
-      options.threads = arguments.threads;
-      options.progress = progress.callback();
-      const auto start = std::chrono::steady_clock::now();
-      Result<Image> image = render_texture(kernel, loaded.params, frame_view, options);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const double samples = static_cast<double>(view.width) * view.height;
-      char text[160];
-      std::snprintf(text, sizeof text, "%dx%d, %.0f samples in %.3f s (%.2f M samples/s", view.width, view.height,
-                    samples, seconds, samples / seconds / 1e6);
-      *summary = text;
-      return image;
-    });
-  }
-  if (graph.kind == GraphKind::volume) return volume_frame_renderer(loaded, kernel, arguments);
-  auto scene = std::make_shared<Result<Scene>>(surface_scene(graph, arguments));
-  if (!*scene) return (*scene).error();
-  if (!arguments.object.empty() && graph.render.scene)
-    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", printable(arguments.file).c_str(),
-                 printable(arguments.object).c_str());
-  Result<std::pair<int, int>> size = image_size(graph, arguments.size);
-  if (!size) return size.error();
-  SurfaceView view;
-  std::tie(view.width, view.height) = *size;
-  view.samples_per_pixel = arguments.samples_per_pixel;
-  auto camera = std::make_shared<Camera>((**scene).desc().camera, view.width, view.height);
-  return FrameRenderer([&, scene, camera, view](float frame, std::string* summary) {
-    SurfaceView frame_view = view;
-    frame_view.frame = frame;
-    ProgressReporter progress("rendering " + arguments.file, "tiles", "samples");
-    SurfaceRenderOptions options;
-    options.threads = arguments.threads;
-    options.shadows = !arguments.no_shadows;
-    options.progress = progress.callback();
-    SurfaceRenderStats stats;
-    const auto start = std::chrono::steady_clock::now();
-    Result<Image> image = render_surface(kernel, loaded.params, **scene, *camera, frame_view, options, &stats);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%dx%d x %d spp, %ld visible samples in %.3f s (thread time: visibility %.3f s, shading %.3f s "
-                  "= %.2f M samples/s, lighting %.3f s",
-                  view.width, view.height, view.samples_per_pixel, stats.visible_samples, seconds,
-                  stats.visibility_seconds, stats.shading_seconds,
-                  stats.shading_seconds > 0 ? static_cast<double>(stats.visible_samples) / stats.shading_seconds / 1e6
-                                            : 0.0,
-                  stats.lighting_seconds);
-    *summary = text;
-    return image;
-  });
+  request.threads = arguments.threads;
+  request.samples_per_pixel = arguments.samples_per_pixel;
+  request.object = arguments.object;
+  request.shadows = !arguments.no_shadows;
+  request.step = arguments.step;
+  request.jitter = arguments.jitter;
+  request.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
+  request.search_paths = arguments.search_paths;
+  return request;
 }
 
 // "A..B" (inclusive, A <= B, at most max_frames frames).
@@ -241,15 +119,23 @@ ExitStatus render(const RenderArguments& arguments) {
     if (!kernel) return report(kernel.error());
   }
   const Kernel& chosen = tiered ? *tiered : **kernel;
-  Result<FrameRenderer> render_frame = frame_renderer(*loaded, chosen, arguments);
-  if (!render_frame) return report(render_frame.error());
+  Result<RenderRequest> request = render_request(arguments);
+  if (!request) return report(request.error());
+  Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded->graph, *request);
+  if (!renderer) return report(renderer.error());
+  if (!arguments.object.empty() && loaded->graph->render.scene)
+    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", printable(arguments.file).c_str(),
+                 printable(arguments.object).c_str());
+  const GraphKindDriver& driver = graph_kind_driver(loaded->graph->kind);
   const double setup_milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   for (std::size_t index = 0; index < frames.size(); ++index) {
     const auto& [frame, path] = frames[index];
-    std::string summary;
-    Result<Image> image = (*render_frame)(frame, &summary);
+    ProgressReporter progress(std::string(driver.progress_verb) + " " + arguments.file, "tiles",
+                              std::string(driver.progress_unit));
+    FrameReport frame_report;
+    Result<Image> image = (*renderer)->render(chosen, loaded->params, frame, progress.callback(), &frame_report);
     if (!image) return report(image.error());
     Status written = write_image(*image, path);
     if (!written) return report(written.error());
@@ -265,7 +151,7 @@ ExitStatus render(const RenderArguments& arguments) {
     }
     const std::string counter =
         frames.size() > 1 ? "frame " + std::to_string(index + 1) + " of " + std::to_string(frames.size()) + ": " : "";
-    std::fprintf(stderr, "%s: %s%s, %s) -> %s\n", arguments.file.c_str(), counter.c_str(), summary.c_str(),
+    std::fprintf(stderr, "%s: %s%s, %s) -> %s\n", arguments.file.c_str(), counter.c_str(), frame_report.summary().c_str(),
                  backend.c_str(), path.c_str());
   }
   return ExitStatus::ok;

@@ -12,10 +12,10 @@
 #include "cli/commands.h"
 #include "pipeline/compile_graph.h"
 #include "pipeline/tiered_kernel.h"
-#include "render/graph_files.h"
-#include "render/output_file.h"
-#include "render/progress.h"
-#include "render/vdb_file.h"
+#include "io/graph_files.h"
+#include "io/output_file.h"
+#include "schedule/progress.h"
+#include "io/vdb_file.h"
 #include "render/voxelize.h"
 
 namespace shadetree {

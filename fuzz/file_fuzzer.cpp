@@ -21,8 +21,8 @@
 
 #include "graph/file_path.h"
 #include "nodes/limits.h"
-#include "render/image_output.h"
-#include "render/mesh.h"
+#include "io/image_output.h"
+#include "io/mesh_file.h"
 #include "server/served_folder.h"
 
 namespace shadetree {

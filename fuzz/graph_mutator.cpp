@@ -74,9 +74,13 @@ bool mutate_graph(json& graph, Random& random) {
     case 4:  // a node dropped: its users now name an unknown id
       nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(pick(random, nodes.size())));
       return true;
-    case 5: {  // another graph kind
-      constexpr const char* kinds[] = {"texture", "surface", "volume"};
-      graph["kind"] = kinds[pick(random, 3)];
+    case 5: {  // another graph kind, with the bounds a volume needs
+      const GraphKind kind = all_graph_kinds[pick(random, all_graph_kinds.size())];
+      graph["kind"] = graph_kind_name(kind);
+      if (kind == GraphKind::volume) {
+        if (!graph["render"].is_object()) graph["render"] = json::object();
+        graph["render"]["volume"] = {{"bounds", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}}};
+      }
       return true;
     }
     default: {  // an attribute at a boundary (octaves, seeds, table sizes)

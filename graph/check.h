@@ -65,7 +65,7 @@ struct CheckedGraph {
 // Functions calling functions: deeper chains are reported, not recursed into.
 inline constexpr int max_function_nesting = 64;
 
-// The files a graph's ops name, read for the checker (render/graph_files.h
+// The files a graph's ops name, read for the checker (io/graph_files.h
 // reads them with OpenImageIO, Assimp and OpenVDB, below the graph's
 // folder): `path` as written in the graph file `graph_file`. A graph that
 // names a file and is checked without the reader for it is an error.

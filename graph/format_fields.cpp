@@ -11,8 +11,6 @@
 namespace shadetree {
 namespace {
 
-const KindSet surface_or_volume = surface_kind | volume_kind;
-
 json numbers_of(int count) {
   return {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", count}, {"maxItems", count}};
 }
@@ -48,6 +46,13 @@ json typed_objects(const std::vector<std::string>& types, const FormatFields& (*
   return {{"type", "array"}, {"items", {{"oneOf", choices}}}, {"maxItems", most}};
 }
 
+KindSet kinds_needing_a_render_section() {
+  KindSet kinds;
+  for (const GraphKindDef& def : graph_kind_defs)
+    if (def.needed_sections) kinds = kinds | kinds_of(def.kind);
+  return kinds;
+}
+
 FormatFields build_graph_fields(GraphKind kind) {
   json kinds = json::array();
   for (GraphKind each : all_graph_kinds) kinds.push_back(graph_kind_name(each));
@@ -61,7 +66,7 @@ FormatFields build_graph_fields(GraphKind kind) {
       {"functions", {{"type", "object"}, {"additionalProperties", object_schema(function_fields(), kind)}}},
       {"nodes", {{"$ref", "#/$defs/nodes"}}, every_kind, every_kind},
       {"outputs", {{"$ref", "#/$defs/outputs"}}, every_kind, every_kind},
-      {"render", object_schema(render_fields(kind), kind)},
+      {"render", object_schema(render_fields(kind), kind), every_kind, kinds_needing_a_render_section()},
   };
 }
 
@@ -89,17 +94,22 @@ FormatFields build_function_input_fields() {
 }
 
 FormatFields build_render_fields(GraphKind kind) {
+  // Each part is for the kinds that take it (nodes/graph_kind.h).
+  auto part = [](std::string name, json schema, RenderSection section) {
+    return FormatField{std::move(name), std::move(schema), kinds_taking(section), kinds_taking(section, true)};
+  };
   return {
-      {"size",
-       {{"type", "array"},
-        {"items", {{"type", "integer"}, {"minimum", 1}, {"maximum", max_image_side}}},
-        {"minItems", 2},
-        {"maxItems", 2}}},
-      {"domain", object_schema(domain_fields(), kind)},
-      {"z", {{"type", "number"}}},
-      {"frame", {{"type", "number"}}},
-      {"scene", object_schema(scene_fields(kind), kind), surface_or_volume},
-      {"volume", object_schema(volume_fields(), kind), volume_kind},
+      part("size",
+           {{"type", "array"},
+            {"items", {{"type", "integer"}, {"minimum", 1}, {"maximum", max_image_side}}},
+            {"minItems", 2},
+            {"maxItems", 2}},
+           section_size),
+      part("domain", object_schema(domain_fields(), kind), section_domain),
+      part("z", {{"type", "number"}}, section_domain),
+      part("frame", {{"type", "number"}}, section_frame),
+      part("scene", object_schema(scene_fields(kind), kind), section_scene),
+      part("volume", object_schema(volume_fields(), kind), section_volume),
   };
 }
 
@@ -187,8 +197,11 @@ const FormatFields& built_once() {
 
 template <FormatFields (*build)(GraphKind)>
 const FormatFields& built_once(GraphKind kind) {
-  static const std::array<FormatFields, 3> tables = {build(GraphKind::texture), build(GraphKind::surface),
-                                                     build(GraphKind::volume)};
+  static const std::array<FormatFields, graph_kind_count> tables = [] {
+    std::array<FormatFields, graph_kind_count> built;
+    for (GraphKind each : all_graph_kinds) built[static_cast<std::size_t>(each)] = build(each);
+    return built;
+  }();
   return tables[static_cast<std::size_t>(kind)];
 }
 

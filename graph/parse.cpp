@@ -42,7 +42,8 @@ class Parser : JsonReader {
     graph.name = optional_string(document, "name", {}, stem(file()));
     const std::string kind = required_string(document, "kind", {});
     const std::optional<GraphKind> known_kind = parse_graph_kind(kind);
-    if (!known_kind) fail({}, {}, "field \"kind\" must be texture, surface or volume, got \"" + kind + "\"");
+    if (!known_kind)
+      fail({}, {}, "field \"kind\" must be " + kind_set_names(every_kind) + ", got \"" + kind + "\"");
     graph.kind = *known_kind;
     check_format_fields(*this, document, graph_fields(graph.kind), graph.kind, "graph");
     graph.doc = optional_string(document, "doc", {}, {});
@@ -53,6 +54,12 @@ class Parser : JsonReader {
     if (!document.contains("outputs")) fail({}, {}, "missing field \"outputs\"");
     graph.outputs = parse_outputs(document["outputs"], {});
     if (document.contains("render")) graph.render = parse_render(document["render"], graph.kind);
+    // What a kind needs to be rendered at all (a volume its bounds) is
+    // refused here, so that check refuses what render would.
+    for (const auto& [section, field] : render_section_fields)
+      if ((graph_kind_def(graph.kind).needed_sections & section) &&
+          !(document.contains("render") && document["render"].contains(field)))
+        fail({}, {}, "a " + kind + " graph needs render." + std::string(field) + " to be rendered");
     return graph;
   }
 

@@ -1,6 +1,6 @@
 // The scene of a surface (or volume) graph's "render" section, as written:
 // a camera, objects, lights and a background. Plain data; the surface
-// driver builds its intersectable scene from it (render/scene.h).
+// driver builds its intersectable scene from it (scene/scene.h).
 #pragma once
 
 #include <array>

@@ -2,17 +2,19 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 
 #include <glm/geometric.hpp>
 
-#include "render/lighting.h"
+#include "scene/lighting.h"
+#include "scene/preview_scene.h"
 #include "render/pixel_hash.h"
-#include "render/stage_clock.h"
-#include "render/image_tiles.h"
-#include "render/thread_bindings.h"
+#include "schedule/stage_clock.h"
+#include "schedule/image_tiles.h"
+#include "schedule/thread_bindings.h"
 
 namespace shadetree {
 namespace {
@@ -71,6 +73,50 @@ void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3&
   for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = value[c];
 }
 
+class SurfaceFrames : public FrameRenderer {
+ public:
+  SurfaceFrames(Scene scene, const SurfaceView& view, const RenderRequest& request)
+      : scene_(std::move(scene)), camera_(scene_.desc().camera, view.width, view.height), view_(view) {
+    options_.threads = request.threads;
+    options_.shadows = request.shadows;
+    options_.cancel = request.cancel;
+  }
+
+  Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
+                             const ProgressCallback& progress, FrameReport& report) const override {
+    SurfaceView view = view_;
+    view.frame = frame;
+    SurfaceRenderOptions options = options_;
+    options.progress = progress;
+    SurfaceRenderStats stats;
+    Result<Image> image = render_surface(kernel, params, scene_, camera_, view, options, &stats);
+    report.kernel_samples = stats.visible_samples;
+    report.kernel_seconds = stats.shading_seconds;
+    report.figures = {{"visible_samples", static_cast<double>(stats.visible_samples)},
+                      {"visibility_s", stats.visibility_seconds},
+                      {"shading_s", stats.shading_seconds},
+                      {"lighting_s", stats.lighting_seconds}};
+    char text[256];
+    std::snprintf(text, sizeof text, "%dx%d x %d spp, %ld visible samples", view.width, view.height,
+                  view.samples_per_pixel, stats.visible_samples);
+    report.what = text;
+    std::snprintf(text, sizeof text,
+                  "thread time: visibility %.3f s, shading %.3f s = %.2f M samples/s, lighting %.3f s",
+                  stats.visibility_seconds, stats.shading_seconds,
+                  stats.shading_seconds > 0 ? static_cast<double>(stats.visible_samples) / stats.shading_seconds / 1e6
+                                            : 0.0,
+                  stats.lighting_seconds);
+    report.details = text;
+    return image;
+  }
+
+ private:
+  Scene scene_;
+  Camera camera_;
+  SurfaceView view_;
+  SurfaceRenderOptions options_;
+};
+
 }  // namespace
 
 UniformInputs surface_uniforms(const Scene& scene, float frame) {
@@ -91,7 +137,13 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
   const int samples_per_pixel = std::max(1, view.samples_per_pixel);
   const bool lit = scene.desc().lighting == Lighting::lit;
   const bool shadows = options.shadows && scene.desc().shadows;
-  const glm::vec3 background(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]);
+  const glm::vec3 colour(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]);
+  auto background = [&](int column, int row) {
+    if (!options.background) return colour;
+    const Image& image = *options.background;
+    const float* pixel = image.pixels.data() + (static_cast<std::size_t>(row) * image.width + column) * 3;
+    return glm::vec3(pixel[0], pixel[1], pixel[2]);
+  };
   const float step = 1.0f / std::sqrt(static_cast<float>(samples_per_pixel));
 
   Image image;
@@ -118,7 +170,7 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
             const Ray ray = camera.ray(px, py);
             std::optional<SceneHit> hit = scene.intersect(ray, 0.0f, std::numeric_limits<float>::infinity());
             if (!hit) {
-              sums[static_cast<std::size_t>(y) * w + x] += background;
+              sums[static_cast<std::size_t>(y) * w + x] += background(x0 + x, y0 + y);
               continue;
             }
             VisibleSample& sample = visible.emplace_back();
@@ -191,7 +243,7 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
         }
         if (layout.provides(OutputId::opacity)) {
           const float opacity = std::clamp(outputs.plane(layout.plane(OutputId::opacity))[i], 0.0f, 1.0f);
-          result = opacity * result + (1.0f - opacity) * background;
+          result = opacity * result + (1.0f - opacity) * background(x0 + sample.pixel % w, y0 + sample.pixel / w);
         }
         sums[static_cast<std::size_t>(sample.pixel)] += result;
       }
@@ -217,6 +269,25 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
     stats->samples = static_cast<long>(view.width) * view.height * samples_per_pixel;
   }
   return image;
+}
+
+Result<std::unique_ptr<FrameRenderer>> prepare_surface(const Graph& graph, const RenderRequest& request) {
+  std::vector<std::string> search_paths = request.search_paths;
+  Result<SceneDesc> desc = surface_scene_desc(graph);
+  if (!request.object.empty()) {
+    desc = preview_scene(request.object);
+    // A mesh named in the request is the user's own choice of file.
+    if (desc && desc->objects[0].type == ObjectType::mesh)
+      search_paths.push_back(std::filesystem::path(desc->objects[0].mesh_file).parent_path().string());
+  }
+  if (!desc) return desc.error();
+  Result<Scene> scene = Scene::build(*desc, graph.file, search_paths);
+  if (!scene) return scene.error();
+  SurfaceView view;
+  view.width = request.size ? request.size->first : graph.render.width;
+  view.height = request.size ? request.size->second : graph.render.height;
+  view.samples_per_pixel = request.samples_per_pixel;
+  return std::unique_ptr<FrameRenderer>(std::make_unique<SurfaceFrames>(std::move(*scene), view, request));
 }
 
 }  // namespace shadetree

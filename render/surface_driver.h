@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "ir/kernel.h"
-#include "render/camera.h"
-#include "render/progress.h"
+#include "render/graph_kinds.h"
+#include "scene/camera.h"
+#include "schedule/progress.h"
 #include "nodes/image.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace shadetree {
 
@@ -27,6 +28,7 @@ struct SurfaceView {
 struct SurfaceRenderOptions {
   int threads = 0;  // 0: all cores
   bool shadows = true;  // and the scene's "shadows"
+  const Image* background = nullptr;  // RGB per pixel (an environment the camera sees); else the scene's colour
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
@@ -48,5 +50,10 @@ UniformInputs surface_uniforms(const Scene& scene, float frame);
 Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
                              const Camera& camera, const SurfaceView& view, const SurfaceRenderOptions& options,
                              SurfaceRenderStats* stats = nullptr);
+
+// The surface row of the kinds table (render/graph_kinds.h): the scene
+// of the request's preview object, else the graph's, else the preview
+// sphere, built once, with its camera at the requested size.
+Result<std::unique_ptr<FrameRenderer>> prepare_surface(const Graph& graph, const RenderRequest& request);
 
 }  // namespace shadetree

@@ -7,15 +7,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
-
-#include "render/image_tiles.h"
-#include "render/thread_bindings.h"
+#include "schedule/image_tiles.h"
+#include "schedule/thread_bindings.h"
 
 namespace shadetree {
 namespace {
 
 constexpr int tile_size = 64;
+
+class TextureFrames : public FrameRenderer {
+ public:
+  TextureFrames(const TextureView& view, const RenderRequest& request) : view_(view) {
+    options_.threads = request.threads;
+    options_.cancel = request.cancel;
+  }
+
+  Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
+                             const ProgressCallback& progress, FrameReport& report) const override {
+    TextureView view = view_;
+    view.frame = frame;
+    TextureRenderOptions options = options_;
+    options.progress = progress;
+    report.kernel_samples = static_cast<long>(view.width) * view.height;
+    report.what = std::to_string(view.width) + "x" + std::to_string(view.height) + ", " +
+                  std::to_string(report.kernel_samples) + " samples";
+    return render_texture(kernel, params, view, options);
+  }
+
+ private:
+  TextureView view_;
+  TextureRenderOptions options_;
+};
 
 }  // namespace
 
@@ -109,6 +133,12 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
       !done)
     return done.error();
   return image;
+}
+
+Result<std::unique_ptr<FrameRenderer>> prepare_texture(const Graph& graph, const RenderRequest& request) {
+  TextureView view = TextureView::from_settings(graph.render);
+  if (request.size) std::tie(view.width, view.height) = *request.size;
+  return std::unique_ptr<FrameRenderer>(std::make_unique<TextureFrames>(view, request));
 }
 
 }  // namespace shadetree

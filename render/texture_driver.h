@@ -9,7 +9,8 @@
 #include "graph/graph.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
-#include "render/progress.h"
+#include "render/graph_kinds.h"
+#include "schedule/progress.h"
 
 namespace shadetree {
 
@@ -52,5 +53,9 @@ struct TextureRenderOptions {
 // A texture graph's "color" and optional "alpha" (nodes/output_contract.h).
 Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                              const TextureRenderOptions& options);
+
+// The texture row of the kinds table (render/graph_kinds.h): the view of
+// the graph's render section at the requested size.
+Result<std::unique_ptr<FrameRenderer>> prepare_texture(const Graph& graph, const RenderRequest& request);
 
 }  // namespace shadetree

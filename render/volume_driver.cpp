@@ -3,17 +3,18 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <glm/geometric.hpp>
 
 #include "graph/parse_volume.h"
 #include "render/density_gradient.h"
-#include "render/image_tiles.h"
-#include "render/lighting.h"
+#include "schedule/image_tiles.h"
+#include "scene/lighting.h"
 #include "render/pixel_hash.h"
-#include "render/stage_clock.h"
-#include "render/thread_bindings.h"
+#include "schedule/stage_clock.h"
+#include "schedule/thread_bindings.h"
 
 namespace shadetree {
 namespace {
@@ -126,11 +127,22 @@ class Marcher {
         options_(options),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
+  // What a pixel's ray sees behind the volume where it meets no object.
+  glm::vec3 background(int column, int row) const {
+    if (!options_.background) return background_;
+    const Image& image = *options_.background;
+    const float* pixel = image.pixels.data() + (static_cast<std::size_t>(row) * image.width + column) * 3;
+    return {pixel[0], pixel[1], pixel[2]};
+  }
+
   // The tile's pixels, RGB, row after row.
   void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, std::vector<glm::vec3>& pixels,
                    TileCounts& counts, std::atomic<long long>& kernel_ns) const {
     const std::size_t lights = scene_.lights().size();
-    pixels.assign(static_cast<std::size_t>(tile.width) * tile.height, background_);
+    pixels.resize(static_cast<std::size_t>(tile.width) * tile.height);
+    for (int y = 0; y < tile.height; ++y)
+      for (int x = 0; x < tile.width; ++x)
+        pixels[static_cast<std::size_t>(y) * tile.width + x] = background(tile.x0 + x, tile.y0 + y);
     std::vector<MarchingRay> rays;
     std::vector<ObjectSample> objects;
     for (int y = 0; y < tile.height; ++y)
@@ -177,7 +189,8 @@ class Marcher {
         if (ray.backdrop && ray.alpha < 1.0f - options_.termination)
           objects.push_back(ObjectSample{ray.pixel, *ray.backdrop, -ray.frame.along, 1.0f - ray.alpha});
         else
-          pixels[pixel] += (1.0f - ray.alpha) * background_;
+          pixels[pixel] +=
+              (1.0f - ray.alpha) * background(tile.x0 + ray.pixel % tile.width, tile.y0 + ray.pixel / tile.width);
       }
     }
     for (std::size_t first = 0; first < objects.size(); first += packet)
@@ -476,6 +489,50 @@ class Marcher {
   glm::vec3 background_;
 };
 
+class VolumeFrames : public FrameRenderer {
+ public:
+  VolumeFrames(Scene scene, const VolumeDesc& volume, const VolumeView& view, const VolumeRenderOptions& options)
+      : scene_(std::move(scene)), camera_(scene_.desc().camera, view.width, view.height), volume_(volume),
+        view_(view), options_(options) {}
+
+  Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
+                             const ProgressCallback& progress, FrameReport& report) const override {
+    VolumeView view = view_;
+    view.frame = frame;
+    VolumeRenderOptions options = options_;
+    options.progress = progress;
+    VolumeRenderStats stats;
+    Result<Image> image = render_volume(kernel, params, scene_, volume_, camera_, view, options, &stats);
+    report.kernel_samples = stats.density_samples;
+    report.kernel_seconds = stats.kernel_seconds;
+    report.figures = {{"rays", static_cast<double>(stats.rays)},
+                      {"density_samples", static_cast<double>(stats.density_samples)},
+                      {"lane_utilisation", stats.lane_utilisation()},
+                      {"kernel_s", stats.kernel_seconds},
+                      {"march_s", stats.march_seconds}};
+    char text[320];
+    std::snprintf(text, sizeof text, "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadows)",
+                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
+                  stats.shadow_samples);
+    report.what = text;
+    std::snprintf(text, sizeof text,
+                  "thread time: kernel %.3f s = %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
+                  stats.kernel_seconds,
+                  stats.kernel_seconds > 0 ? static_cast<double>(stats.density_samples) / stats.kernel_seconds / 1e6
+                                           : 0.0,
+                  100.0 * stats.lane_utilisation(), options.lane_width, stats.march_seconds);
+    report.details = text;
+    return image;
+  }
+
+ private:
+  Scene scene_;
+  Camera camera_;
+  VolumeDesc volume_;
+  VolumeView view_;
+  VolumeRenderOptions options_;
+};
+
 }  // namespace
 
 SceneDesc volume_scene(const std::optional<SceneDesc>& scene) {
@@ -554,6 +611,28 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     stats->lane_slots = lane_slots;
   }
   return image;
+}
+
+Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const RenderRequest& request) {
+  if (!graph.render.volume) return invalid_input("a volume graph needs render.volume to be rendered");
+  const VolumeDesc& volume = *graph.render.volume;
+  if (request.step)
+    if (std::string problem = step_problem(volume, *request.step, "--step"); !problem.empty())
+      return invalid_input(problem);
+  Result<Scene> scene = Scene::build(volume_scene(graph.render.scene), graph.file, request.search_paths);
+  if (!scene) return scene.error();
+  VolumeView view;
+  view.width = request.size ? request.size->first : graph.render.width;
+  view.height = request.size ? request.size->second : graph.render.height;
+  VolumeRenderOptions options;
+  options.threads = request.threads;
+  options.step = request.step.value_or(request.draft ? draft_step_factor * march_step(volume) : 0.0f);
+  if (request.draft) options.shadow_step = draft_step_factor * reference_step(volume);
+  if (request.jitter) options.jitter = true;
+  options.shadows = request.shadows;
+  options.lane_width = request.lane_width;
+  options.cancel = request.cancel;
+  return std::unique_ptr<FrameRenderer>(std::make_unique<VolumeFrames>(std::move(*scene), volume, view, options));
 }
 
 }  // namespace shadetree

@@ -18,10 +18,11 @@
 
 #include "graph/scene.h"
 #include "ir/kernel.h"
+#include "render/graph_kinds.h"
 #include "nodes/image.h"
-#include "render/camera.h"
-#include "render/progress.h"
-#include "render/scene.h"
+#include "scene/camera.h"
+#include "schedule/progress.h"
+#include "scene/scene.h"
 
 namespace shadetree {
 
@@ -44,6 +45,7 @@ struct VolumeRenderOptions {
   float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
+  const Image* background = nullptr;  // RGB per pixel (an environment the camera sees); else the scene's colour
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
@@ -78,5 +80,15 @@ UniformInputs volume_uniforms(float frame, float step);
 Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& params, const Scene& scene,
                             const VolumeDesc& volume, const Camera& camera, const VolumeView& view,
                             const VolumeRenderOptions& options, VolumeRenderStats* stats = nullptr);
+
+// A draft's steps (RenderRequest::draft), in units of the volume's march
+// step and, for its shadow rays, of its reference step. Its density stays
+// as it is: opacity is defined per reference step.
+inline constexpr float draft_step_factor = 4.0f;
+
+// The volume row of the kinds table (render/graph_kinds.h): the graph's
+// scene (or the default one) built once, its camera at the requested size,
+// the requested step checked against the volume.
+Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const RenderRequest& request);
 
 }  // namespace shadetree

@@ -7,7 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "render/thread_bindings.h"
+#include "schedule/thread_bindings.h"
 #include "render/volume_driver.h"
 
 namespace shadetree {

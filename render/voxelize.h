@@ -1,35 +1,20 @@
 // A volume graph sampled on a regular grid over its bounds, for export
-// (render/vdb_file.h), so that a hypertexture opens in Blender or Houdini.
+// (io/vdb_file.h), so that a hypertexture opens in Blender or Houdini.
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "graph/diagnostic.h"
 #include "graph/scene.h"
 #include "ir/kernel.h"
-#include "render/progress.h"
+#include "io/voxel_grid.h"
+#include "schedule/progress.h"
 
 namespace shadetree {
 
 // Voxels along the bounds' longest side, at most: 512^3 voxels hold 0.5 GiB
 // of densities and 1.5 GiB of colours before they are written.
 inline constexpr int max_voxel_resolution = 512;
-
-// Cubic voxels of side `voxel_size`; voxel (i, j, k) is centred at
-// origin + ((i, j, k) + 0.5) * voxel_size. Densities and colours are
-// indexed [(k * size[1] + j) * size[0] + i].
-struct VoxelGrid {
-  std::array<int, 3> size{0, 0, 0};
-  std::array<float, 3> origin{0.0f, 0.0f, 0.0f};
-  float voxel_size = 0.0f;
-  std::vector<float> density;
-  std::vector<float> color;  // rgb per voxel; empty when the graph has no colour
-
-  std::size_t index(int i, int j, int k) const {
-    return (static_cast<std::size_t>(k) * size[1] + j) * size[0] + i;
-  }
-};
 
 struct VoxelizeOptions {
   int resolution = 128;  // voxels along the longest side of the bounds

@@ -18,10 +18,10 @@
 #include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
+#include "io/graph_files.h"
 #include "render/graph_preview.h"
-#include "render/image_output.h"
-#include "render/output_file.h"
+#include "io/image_output.h"
+#include "io/output_file.h"
 #include "server/node_library.h"
 #include "server/node_probe.h"
 

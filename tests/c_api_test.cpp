@@ -9,7 +9,9 @@
 #include "api/shadetree.h"
 #include "interp/interpreter.h"
 #include "pipeline/compile_graph.h"
-#include "render/image_output.h"
+#include "io/graph_files.h"
+#include "io/image_output.h"
+#include "render/graph_kinds.h"
 
 namespace shadetree {
 namespace {
@@ -124,6 +126,31 @@ TEST(CApi, RendersTexturesAndWritesImages) {
       << shadetree_last_error();
   EXPECT_EQ(shadetree_render_texture(surface.graph, 16, 8, 0.0f, rgba.data()), SHADETREE_INVALID_INPUT);
   EXPECT_NE(std::string(shadetree_last_error()).find("surface graph"), std::string::npos);
+}
+
+// Every kind renders through its driver, as the command line renders it:
+// the vase on its scene, the sphere through the ray marcher.
+TEST(CApi, RendersEveryKindAsTheCommandLineDoes) {
+  for (const char* name : {"marble_vase", "noisy_sphere"}) {
+    const std::string file = std::string(SHADETREE_SOURCE_DIR "/graphs/") + name + ".json";
+    GraphHandle handle;
+    ASSERT_EQ(shadetree_load(file.c_str(), SHADETREE_INTERPRETER, &handle.graph), SHADETREE_OK)
+        << shadetree_last_error();
+    std::vector<float> rgba(4 * 12 * 12, -1.0f);
+    ASSERT_EQ(shadetree_render(handle.graph, 12, 12, 0.0f, rgba.data()), SHADETREE_OK) << shadetree_last_error();
+    Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files());
+    ASSERT_TRUE(loaded.ok());
+    RenderRequest request;
+    request.size = {12, 12};
+    Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded->graph, request);
+    ASSERT_TRUE(renderer.ok()) << renderer.error().to_string();
+    Result<Image> image = (*renderer)->render(*make_interpreted_kernel(loaded->ir), loaded->params, 0.0f, {}, nullptr);
+    ASSERT_TRUE(image.ok());
+    for (std::size_t i = 0; i < 12 * 12; ++i) {
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(rgba[4 * i + c], image->pixels[3 * i + c]) << name << " pixel " << i;
+      EXPECT_EQ(rgba[4 * i + 3], 1.0f);
+    }
+  }
 }
 
 }  // namespace

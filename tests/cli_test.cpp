@@ -13,8 +13,8 @@
 
 #include "graph/graph.h"
 #include "nodes/registry.h"
-#include "render/image_output.h"
-#include "render/vdb_file.h"
+#include "io/image_output.h"
+#include "io/vdb_file.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
@@ -175,6 +175,10 @@ TEST_F(Cli, BadScenesExitWithTwoOneLineAndNoOutput) {
     EXPECT_EQ(line_count(run.err), 1) << run.err;
     EXPECT_NE(run.err.find(words), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
+    // check builds the scene as render does, and refuses it with the same line.
+    const CommandResult check = shadetree("check " + graph.string());
+    EXPECT_EQ(check.status, 2) << scene << ": " << check.err;
+    EXPECT_EQ(check.err, run.err);
   }
   // Allowed by --search-path, the broken mesh is read, and refused for what it is.
   const fs::path graph = directory_ / "inner" / "scene.json";
@@ -184,6 +188,7 @@ TEST_F(Cli, BadScenesExitWithTwoOneLineAndNoOutput) {
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("broken.obj"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(shadetree("check " + graph.string() + " --search-path " + directory_.string()).err, run.err);
 }
 
 TEST_F(Cli, ImageGraphsReadTheirFilesAndRefuseBadOnes) {
@@ -253,6 +258,10 @@ TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
     EXPECT_EQ(line_count(run.err), 1) << run.err;
     EXPECT_NE(run.err.find(words), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
+    // What render refuses in a graph, check refuses with the same line.
+    const CommandResult check = shadetree("check " + graph.string());
+    EXPECT_EQ(check.status, 2) << render << ": " << check.err;
+    EXPECT_EQ(check.err, run.err);
   }
   const fs::path graph = write("volume.json", R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
       "nodes": [], "outputs": {"density": 0.5}, "render": {)" + bounded + "}}");
@@ -398,10 +407,10 @@ TEST_F(Cli, BenchMarchesVolumeGraphs) {
   const CommandResult run =
       shadetree("bench " + gallery + "noisy_sphere.json --size 16x16 --repetitions 1 --threads 2 --json");
   ASSERT_EQ(run.status, 0) << run.err;
-  const auto marcher = nlohmann::json::parse(run.out)[0]["volume_driver"];
+  const auto marcher = nlohmann::json::parse(run.out)[0]["driver"];
   ASSERT_EQ(marcher.size(), 4u);  // jit and interp, at 1 and 2 threads
   for (const char* key : {"backend", "threads", "rays", "density_samples", "lane_utilisation", "kernel_s", "march_s",
-                          "total_s", "density_sps", "density_vs_kernel"})
+                          "total_s", "kernel_sps", "kernel_vs_texture_samples"})
     EXPECT_TRUE(marcher[0].contains(key)) << key;
   EXPECT_GT(marcher[0]["density_samples"].get<long>(), 16 * 16);
   EXPECT_GT(marcher[0]["lane_utilisation"].get<double>(), 0.5);

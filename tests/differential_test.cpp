@@ -164,7 +164,7 @@ TEST(NodeDifferential, DensityInputAgreesInVolumes) {
       "nodes": [{"id": "p", "op": "P"}, {"id": "d", "op": "density"},
                 {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 2}},
                 {"id": "out", "op": "union", "in": {"a": "d", "b": "s"}}],
-      "outputs": {"density": "out"}})");
+      "outputs": {"density": "out"}, "render": {"volume": {"bounds": {"min": [-2, -2, -2], "max": [2, 2, 2]}}}})");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   EXPECT_EQ(compare_backends("density", loaded->ir, loaded->params, 16), "");
 }

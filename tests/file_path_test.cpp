@@ -11,11 +11,11 @@
 #include <unistd.h>
 
 #include "graph/parse.h"
-#include "render/image_output.h"
-#include "render/mesh.h"
-#include "render/output_file.h"
-#include "render/resource_path.h"
-#include "render/vdb_file.h"
+#include "io/image_output.h"
+#include "io/mesh_file.h"
+#include "io/output_file.h"
+#include "io/resource_path.h"
+#include "io/vdb_file.h"
 
 namespace shadetree {
 namespace {

@@ -39,6 +39,8 @@ def problems(document):
 def minimal_graph(kind, **fields):
     graph = {"format": "shadetree-graph", "version": 1, "kind": kind,
              "nodes": [{"id": "d", "op": "P"}], "outputs": {"density" if kind == "volume" else "color": 0.5}}
+    if kind == "volume":  # a volume is rendered only within its bounds
+        graph["render"] = {"volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}}}
     graph.update(fields)
     return graph
 
@@ -84,6 +86,8 @@ broken = {
                                                                        "stepsize": 1}}),
     "param_without_default": minimal_graph("texture", params={"s": {"type": "float"}}),
     "unknown_kind": minimal_graph("hologram"),
+    "volume_without_bounds": minimal_graph("volume", render={"size": [8, 8]}),
+    "volume_without_render": {key: value for key, value in minimal_graph("volume").items() if key != "render"},
     "no_nodes": {"format": "shadetree-graph", "version": 1, "kind": "texture", "outputs": {"color": 1}},
     "version_2": minimal_graph("texture", version=2),
 }

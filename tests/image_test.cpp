@@ -14,8 +14,8 @@
 #include "interp/interpreter.h"
 #include "nodes/semantics/splines.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
-#include "render/image_output.h"
+#include "io/graph_files.h"
+#include "io/image_output.h"
 #include "support/graph_text.h"
 #include "support/test_files.h"
 

@@ -5,7 +5,7 @@
 #include <mutex>
 #include <vector>
 
-#include "render/image_tiles.h"
+#include "schedule/image_tiles.h"
 
 namespace shadetree {
 namespace {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "render/image_output.h"
+#include "io/image_output.h"
 
 namespace shadetree {
 namespace {

@@ -10,9 +10,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/mesh.h"
-#include "render/preview_scene.h"
-#include "render/vdb_file.h"
+#include "scene/mesh_intersector.h"
+#include "scene/preview_scene.h"
+#include "io/vdb_file.h"
 #include "support/cube_mesh.h"
 
 namespace shadetree {

@@ -11,8 +11,8 @@
 
 #include "interp/interpreter.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
-#include "render/vdb_file.h"
+#include "io/graph_files.h"
+#include "io/vdb_file.h"
 #include "support/cube_mesh.h"
 #include "support/graph_text.h"
 #include "support/test_files.h"

@@ -1,5 +1,5 @@
 // Output files written through a temporary and renamed into place
-// (render/output_file.h): concurrent writes of one file, the temporary's
+// (io/output_file.h): concurrent writes of one file, the temporary's
 // extension and length, and failed writes.
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "graph/file_path.h"
-#include "render/output_file.h"
+#include "io/output_file.h"
 
 namespace shadetree {
 namespace {

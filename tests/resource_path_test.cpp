@@ -7,7 +7,7 @@
 
 #include <unistd.h>
 
-#include "render/resource_path.h"
+#include "io/resource_path.h"
 
 namespace shadetree {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/shapes.h"
+#include "scene/shapes.h"
 
 namespace shadetree {
 namespace {

@@ -9,7 +9,8 @@
 
 #include "interp/interpreter.h"
 #include "pipeline/compile_graph.h"
-#include "render/vdb_file.h"
+#include "io/vdb_file.h"
+#include "render/voxelize.h"
 #include "support/graph_text.h"
 
 namespace shadetree {

@@ -8,7 +8,7 @@
 
 #include "graph/parse.h"
 #include "pipeline/compile_graph.h"
-#include "render/graph_files.h"
+#include "io/graph_files.h"
 
 namespace shadetree::testing {
 

@@ -1,4 +1,4 @@
-#include "render/preview_scene.h"
+#include "scene/preview_scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "render/mesh.h"
+#include "io/mesh_file.h"
 
 namespace shadetree {
 namespace {

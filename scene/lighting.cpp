@@ -1,4 +1,4 @@
-#include "render/lighting.h"
+#include "scene/lighting.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The files a graph's ops name, read from the graph's folder or a folder
 // the user allowed (--search-path), as scene meshes are
-// (render/resource_path.h): images for the `image` op (OpenImageIO), mesh
+// (io/resource_path.h): images for the `image` op (OpenImageIO), mesh
 // files as signed distance grids for the mesh ops (Assimp, then OpenVDB).
 #pragma once
 

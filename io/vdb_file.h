@@ -1,4 +1,4 @@
-// OpenVDB files of voxel grids (render/voxelize.h): a fog volume "density"
+// OpenVDB files of voxel grids (io/voxel_grid.h): a fog volume "density"
 // and, where the graph has one, a "color" grid, with the transform that
 // puts each voxel at its place in world space; and meshes as distance
 // grids. OpenVDB's headers are seen by vdb_module.cpp only.
@@ -8,13 +8,13 @@
 
 #include "graph/diagnostic.h"
 #include "nodes/distance_grid.h"
-#include "render/mesh.h"
-#include "render/voxelize.h"
+#include "io/mesh_file.h"
+#include "io/voxel_grid.h"
 
 namespace shadetree {
 
 // Written to a temporary file and renamed into place when complete
-// (render/output_file.h). Voxels of density 0 are left out (the background).
+// (io/output_file.h). Voxels of density 0 are left out (the background).
 Status write_vdb(const VoxelGrid& grid, const std::string& path);
 
 // Reads back what write_vdb wrote: the density and colour of every voxel

@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "graph/diagnostic.h"
-#include "render/progress.h"
+#include "schedule/progress.h"
 
 namespace shadetree {
 

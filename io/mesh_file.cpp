@@ -15,7 +15,7 @@
 #include <assimp/scene.h>
 
 #include "graph/file_path.h"
-#include "render/mesh.h"
+#include "io/mesh_file.h"
 
 namespace shadetree {
 namespace {

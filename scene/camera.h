@@ -4,7 +4,7 @@
 #pragma once
 
 #include "graph/scene.h"
-#include "render/ray.h"
+#include "scene/ray.h"
 
 namespace shadetree {
 

@@ -1,10 +1,10 @@
-#include "render/image_output.h"
+#include "io/image_output.h"
 
 #include <filesystem>
 
 #include "graph/file_path.h"
-#include "render/loadable_module.h"
-#include "render/output_file.h"
+#include "io/loadable_module.h"
+#include "io/output_file.h"
 
 namespace shadetree {
 
@@ -16,7 +16,7 @@ std::string lowercase_extension(const std::string& path) {
   return extension;
 }
 
-// The OpenImageIO module (render/image_io_module.cpp), loaded on first use.
+// The OpenImageIO module (io/image_io_module.cpp), loaded on first use.
 struct ImageIoModule {
   LoadableModule module{"libshadetree_image_io.so", "image support"};
   int (*write)(const char*, const char*, const float*, int, int, int, int, char*, std::size_t) =

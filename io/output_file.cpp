@@ -1,4 +1,4 @@
-#include "render/output_file.h"
+#include "io/output_file.h"
 
 #include <unistd.h>
 

@@ -2,7 +2,7 @@
 // (libshadetree_image_io.so) so that only commands that read or write
 // images pay for loading OpenImageIO: Debian's build of it pulls in some
 // 250 shared libraries (GDAL, OpenVDB, Xerces...), a quarter of a second of
-// dynamic linking at every start. render/image_output.cpp loads it.
+// dynamic linking at every start. io/image_output.cpp loads it.
 #include <fcntl.h>
 #include <unistd.h>
 

@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-#include "render/ray.h"
+#include "scene/ray.h"
 
 namespace shadetree {
 
@@ -57,6 +57,12 @@ class Revolution {
   struct Segment {
     float r0, h0, r1, h1, s0, s1;
   };
+  // The four spline points around profile parameter s, and t, its place between the middle two.
+  struct Span {
+    glm::vec2 p0, p1, p2, p3;
+    float t;
+  };
+  Span span_at(float s) const;
   glm::vec2 tangent_at(float s) const;  // d(radius, height) / ds
   std::vector<glm::vec2> profile_;
   std::vector<Segment> segments_;

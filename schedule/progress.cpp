@@ -1,4 +1,4 @@
-#include "render/progress.h"
+#include "schedule/progress.h"
 
 #include <unistd.h>
 

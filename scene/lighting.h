@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace shadetree {
 

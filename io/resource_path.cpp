@@ -1,4 +1,4 @@
-#include "render/resource_path.h"
+#include "io/resource_path.h"
 
 #include <filesystem>
 

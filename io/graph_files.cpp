@@ -1,4 +1,4 @@
-#include "render/graph_files.h"
+#include "io/graph_files.h"
 
 #include <filesystem>
 #include <map>
@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "nodes/limits.h"
-#include "render/image_output.h"
-#include "render/mesh.h"
-#include "render/resource_path.h"
-#include "render/vdb_file.h"
+#include "io/image_output.h"
+#include "io/mesh_file.h"
+#include "io/resource_path.h"
+#include "io/vdb_file.h"
 
 namespace shadetree {
 namespace {

@@ -1,21 +1,19 @@
-// Triangle meshes: read from OBJ and PLY files (Assimp) and hit through
-// Embree 3's BVH. Neither library's headers leave mesh_file.cpp and
-// mesh_intersector.cpp.
+// Triangle meshes read from OBJ and PLY files (Assimp, whose headers do
+// not leave mesh_file.cpp).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
-#include <memory>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/geometric.hpp>
 
 #include "graph/diagnostic.h"
-#include "render/ray.h"
 
 namespace shadetree {
 
@@ -59,27 +57,5 @@ inline std::string too_small_to_scale(const glm::vec3& low, const glm::vec3& hig
   if (extent >= 1e-5f * std::max({farthest.x, farthest.y, farthest.z, 1.0f})) return {};
   return "mesh is too small for " + use + ": its bounding box is " + std::to_string(extent) + " across";
 }
-
-// A mesh's BVH, built once; intersect() may be called from any thread.
-class MeshIntersector {
- public:
-  // The mesh must hold at least one triangle (load_mesh ensures it).
-  explicit MeshIntersector(TriangleMesh mesh);
-  ~MeshIntersector();
-  MeshIntersector(const MeshIntersector&) = delete;
-  MeshIntersector& operator=(const MeshIntersector&) = delete;
-
-  // The nearest hit with t in [t_min, t_max]. normal: the interpolated
-  // vertex normal if the mesh has normals, else the geometric normal
-  // (counter-clockwise winding faces out); uv: interpolated texture
-  // coordinates if the mesh has them, else the barycentric (u, v).
-  std::optional<SurfaceHit> intersect(const Ray& ray, float t_min, float t_max) const;
-
-  const TriangleMesh& mesh() const;
-
- private:
-  struct State;
-  std::unique_ptr<State> state_;
-};
 
 }  // namespace shadetree

@@ -1,4 +1,4 @@
-#include "render/image_tiles.h"
+#include "schedule/image_tiles.h"
 
 #include <algorithm>
 #include <atomic>

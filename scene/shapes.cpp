@@ -1,13 +1,13 @@
 // Ray intersections of the analytic objects, in object space. Directions
 // are not unit length (see ray.h): every t is along the given direction.
-#include "render/shapes.h"
+#include "scene/shapes.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-#include "render/mesh.h"
+#include "scene/mesh_intersector.h"
 
 namespace shadetree {
 namespace {
@@ -170,24 +170,22 @@ Revolution::Revolution(std::vector<glm::vec2> profile) : profile_(std::move(prof
 
 // Catmull-Rom through the points, the end points doubled as phantom
 // neighbours; s in [0, 1] runs uniformly over the spans.
-glm::vec2 Revolution::point_at(float s) const {
+Revolution::Span Revolution::span_at(float s) const {
   const int spans = static_cast<int>(profile_.size()) - 1;
   const float x = std::clamp(s, 0.0f, 1.0f) * spans;
   const int span = std::min(static_cast<int>(x), spans - 1);
-  const float t = x - span;
   auto at = [&](int i) { return profile_[static_cast<std::size_t>(std::clamp(i, 0, spans))]; };
-  const glm::vec2 p0 = at(span - 1), p1 = at(span), p2 = at(span + 1), p3 = at(span + 2);
+  return {at(span - 1), at(span), at(span + 1), at(span + 2), x - span};
+}
+
+glm::vec2 Revolution::point_at(float s) const {
+  const auto [p0, p1, p2, p3, t] = span_at(s);
   return 0.5f * ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t * t +
                  (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t * t * t);
 }
 
 glm::vec2 Revolution::tangent_at(float s) const {
-  const int spans = static_cast<int>(profile_.size()) - 1;
-  const float x = std::clamp(s, 0.0f, 1.0f) * spans;
-  const int span = std::min(static_cast<int>(x), spans - 1);
-  const float t = x - span;
-  auto at = [&](int i) { return profile_[static_cast<std::size_t>(std::clamp(i, 0, spans))]; };
-  const glm::vec2 p0 = at(span - 1), p1 = at(span), p2 = at(span + 1), p3 = at(span + 2);
+  const auto [p0, p1, p2, p3, t] = span_at(s);
   return 0.5f * ((-p0 + p2) + 2.0f * (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t +
                  3.0f * (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t * t);
 }

@@ -1,4 +1,4 @@
-#include "render/vdb_file.h"
+#include "io/vdb_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,13 @@
 #include <glm/common.hpp>
 
 #include "graph/file_path.h"
-#include "render/loadable_module.h"
-#include "render/output_file.h"
+#include "io/loadable_module.h"
+#include "io/output_file.h"
 
 namespace shadetree {
 namespace {
 
-// The OpenVDB module (render/vdb_module.cpp), loaded on first use.
+// The OpenVDB module (io/vdb_module.cpp), loaded on first use.
 struct VdbModule {
   LoadableModule module{"libshadetree_vdb.so", "OpenVDB support"};
   int (*write)(const char*, const int*, const float*, float, const float*, const float*, char*, std::size_t) =

@@ -1,7 +1,7 @@
 // The OpenVDB side of VDB files, built as a loadable module
 // (libshadetree_vdb.so) so that only `voxelize` and the tests that read
-// VDB files pay for linking OpenVDB (render/loadable_module.h).
-// render/vdb_file.cpp loads it.
+// VDB files pay for linking OpenVDB (io/loadable_module.h).
+// io/vdb_file.cpp loads it.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>

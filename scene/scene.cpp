@@ -1,4 +1,4 @@
-#include "render/scene.h"
+#include "scene/scene.h"
 
 #include <cmath>
 #include <map>
@@ -7,8 +7,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/mesh.h"
-#include "render/resource_path.h"
+#include "scene/mesh_intersector.h"
+#include "io/resource_path.h"
 
 namespace shadetree {
 namespace {

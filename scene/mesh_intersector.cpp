@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/mesh.h"
+#include "scene/mesh_intersector.h"
 
 namespace shadetree {
 namespace {

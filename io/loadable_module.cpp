@@ -1,4 +1,4 @@
-#include "render/loadable_module.h"
+#include "io/loadable_module.h"
 
 #include <dlfcn.h>
 

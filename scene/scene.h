@@ -15,7 +15,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/scene.h"
-#include "render/shapes.h"
+#include "scene/shapes.h"
 
 namespace shadetree {
 

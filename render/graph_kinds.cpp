@@ -1,0 +1,84 @@
+#include "render/graph_kinds.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "render/surface_driver.h"
+#include "render/texture_driver.h"
+#include "render/volume_driver.h"
+
+namespace shadetree {
+namespace {
+
+constexpr GraphKindDriver drivers[] = {
+    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture},
+    {GraphKind::surface, option_samples_per_pixel | option_object | option_no_shadows, "rendering", "samples", true,
+     prepare_surface},
+    {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume},
+};
+static_assert(std::size(drivers) == graph_kind_count, "a driver for every kind of nodes/graph_kind.h");
+static_assert([] {
+  for (int i = 0; i < graph_kind_count; ++i)
+    if (static_cast<int>(drivers[i].kind) != i) return false;
+  return true;
+}(), "drivers in the order of the kinds");
+
+constexpr std::pair<RenderOption, const char*> option_names[] = {{option_samples_per_pixel, "--spp"},
+                                                                 {option_object, "--object"},
+                                                                 {option_no_shadows, "--no-shadows"},
+                                                                 {option_step, "--step"},
+                                                                 {option_jitter, "--jitter"}};
+
+// "surface or volume": the kinds whose drivers take `option`.
+std::string kinds_taking(RenderOption option) {
+  KindSet kinds;
+  for (const GraphKindDriver& driver : drivers)
+    if (driver.options & option) kinds = kinds | kinds_of(driver.kind);
+  return kind_set_names(kinds);
+}
+
+}  // namespace
+
+unsigned RenderRequest::options() const {
+  return (samples_per_pixel != 1 ? option_samples_per_pixel : 0) | (!object.empty() ? option_object : 0) |
+         (!shadows ? option_no_shadows : 0) | (step ? option_step : 0) | (jitter ? option_jitter : 0);
+}
+
+std::string FrameReport::summary() const {
+  char text[64];
+  std::snprintf(text, sizeof text, " in %.3f s (", seconds);
+  if (!details.empty()) return what + text + details;
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.2f M samples/s", seconds > 0 ? kernel_samples / seconds / 1e6 : 0.0);
+  return what + text + rate;
+}
+
+Result<Image> FrameRenderer::render(const Kernel& kernel, const std::vector<float>& params, float frame,
+                                    const ProgressCallback& progress, FrameReport* report) const {
+  FrameReport counts;
+  const auto start = std::chrono::steady_clock::now();
+  Result<Image> image = render_frame(kernel, params, frame, progress, counts);
+  counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (report) *report = std::move(counts);
+  return image;
+}
+
+const GraphKindDriver& graph_kind_driver(GraphKind kind) { return drivers[static_cast<int>(kind)]; }
+
+Result<std::unique_ptr<FrameRenderer>> prepare_render(const Graph& graph, const RenderRequest& request) {
+  const GraphKindDriver& driver = graph_kind_driver(graph.kind);
+  const std::string kind(graph_kind_name(graph.kind));
+  for (const auto& [option, name] : option_names)
+    if ((request.options() & option) && !(driver.options & option))
+      return Diagnostic{ExitStatus::invalid_input, graph.file, {}, {},
+                        std::string(name) + " is for " + kinds_taking(option) + " graphs; this is a " + kind + " graph"};
+  Result<std::unique_ptr<FrameRenderer>> prepared = driver.prepare(graph, request);
+  if (!prepared && prepared.error().file.empty()) {
+    Diagnostic named = prepared.error();
+    named.file = graph.file;
+    return named;
+  }
+  return prepared;
+}
+
+}  // namespace shadetree

@@ -1,0 +1,97 @@
+// The drivers of the graph kinds (nodes/graph_kind.h), in one table: for
+// each kind the render options it takes and how a graph of it is set up
+// (render section checked, scene built, camera placed) and rendered, frame
+// by frame. The command line, the server's previews, the C API and bench
+// render every kind through prepare_render and nowhere else, so a new
+// kind is a row of nodes/graph_kind.h and one here with its driver.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "graph/diagnostic.h"
+#include "graph/graph.h"
+#include "ir/kernel.h"
+#include "nodes/image.h"
+#include "schedule/progress.h"
+
+namespace shadetree {
+
+// The options of a render that only some kinds take.
+enum RenderOption : unsigned {
+  option_samples_per_pixel = 1,  // --spp
+  option_object = 2,             // --object
+  option_no_shadows = 4,         // --no-shadows
+  option_step = 8,               // --step
+  option_jitter = 16,            // --jitter
+};
+
+// What a caller asks of a render, whatever the graph's kind.
+struct RenderRequest {
+  std::optional<std::pair<int, int>> size;  // default: the graph's render size
+  int threads = 0;                          // 0: all cores
+  int samples_per_pixel = 1;                // surface: jittered samples per pixel
+  std::string object;                       // surface: a preview object instead of the graph's scene
+  bool shadows = true;                      // surface, volume: and the scene's "shadows"
+  std::optional<float> step;                // volume: the march step (default: the volume's)
+  bool jitter = false;                      // volume: jitter each ray's start (default: the volume's)
+  bool draft = false;                       // volume: march coarser steps (editor previews while editing)
+  int lane_width = 0;                       // the kernel's vector width, for the lane figures only
+  std::vector<std::string> search_paths;    // folders besides the graph's own that its scene may read
+  const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (schedule/image_tiles.h)
+
+  // The RenderOption bits this request sets.
+  unsigned options() const;
+};
+
+// What a frame's render tells: a line for the command line, and the
+// figures bench tabulates (seconds are of one core, summed over threads).
+struct FrameReport {
+  std::string what;     // "512x512, 262144 samples"
+  std::string details;  // where the time went; empty: the samples' rate over the frame
+  double seconds = 0;   // the frame's wall time
+  long kernel_samples = 0;  // samples the graph was run on
+  double kernel_seconds = 0;
+  std::vector<std::pair<std::string, double>> figures;  // by name: "visible_samples", "march_s", ...
+
+  // "<what> in <seconds> s (<details>": the caller closes the parenthesis.
+  std::string summary() const;
+};
+
+// A graph's driver, set up for one request; renders any frame with any
+// kernel of the graph.
+class FrameRenderer {
+ public:
+  virtual ~FrameRenderer() = default;
+  // The frame, and in `report` (if not null) what it took.
+  Result<Image> render(const Kernel& kernel, const std::vector<float>& params, float frame,
+                       const ProgressCallback& progress, FrameReport* report) const;
+
+ private:
+  // The driver's part: the frame, and its counts in `report` but the time.
+  virtual Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
+                                     const ProgressCallback& progress, FrameReport& report) const = 0;
+};
+
+struct GraphKindDriver {
+  GraphKind kind;
+  unsigned options;  // the RenderOption bits it takes
+  std::string_view progress_verb;  // "marching": what its progress line says it does
+  std::string_view progress_unit;  // "rays": what its progress counts besides tiles
+  bool bench_driver;  // bench measures the driver as well as the kernel
+  Result<std::unique_ptr<FrameRenderer>> (*prepare)(const Graph& graph, const RenderRequest& request);
+};
+
+const GraphKindDriver& graph_kind_driver(GraphKind kind);
+
+// The driver of `graph`'s kind set up for `request`: refused, naming the
+// graph's file, when the request sets an option the kind does not take,
+// the size is out of range, or the scene cannot be built.
+Result<std::unique_ptr<FrameRenderer>> prepare_render(const Graph& graph, const RenderRequest& request);
+
+}  // namespace shadetree
