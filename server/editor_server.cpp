@@ -138,6 +138,57 @@ std::string rgba_bytes(const Image& image) {
   return bytes;
 }
 
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A body that does not load as a graph: 422, with the diagnostic's fields.
+void send_unprocessable(httplib::Response& response, const Diagnostic& diagnostic) {
+  response.status = 422;
+  send_json(response, {{"error", diagnostic.to_string()}, {"diagnostic", diagnostic_json(diagnostic)}});
+}
+
+// The size, frame and draft a preview request asks for, its sides up to `max_side`.
+Result<PreviewRequest> preview_request(const httplib::Request& request, int max_side) {
+  PreviewRequest preview;
+  for (auto [name, target] : {std::pair{"width", &preview.width}, std::pair{"height", &preview.height}}) {
+    Result<int> side = integer_parameter(request, name, 256, 1, max_side);
+    if (!side) return side.error();
+    *target = *side;
+  }
+  Result<int> frame = integer_parameter(request, "frame", 0, 0, 1000000);
+  if (!frame) return frame.error();
+  preview.frame = static_cast<float>(*frame);
+  preview.draft = request.get_param_value("draft") == "1";
+  return preview;
+}
+
+// The request's body as graph `path`, or with node= the graph that shows
+// that node's value instead (server/node_probe.h).
+Result<LoadedGraph> load_body(const httplib::Request& request, const std::filesystem::path& path,
+                              const GraphFiles& files) {
+  if (!request.has_param("node")) return compile_graph_text(request.body, path.string(), {}, {}, files);
+  Result<std::string> probe = node_probe_graph(request.body, path.string(), request.get_param_value("node"), files,
+                                               request.get_param_value("function"));
+  if (!probe) return probe.error();
+  return compile_graph_text(*probe, path.string(), {}, {}, files);
+}
+
+// The image as the bytes of a png or exr file. OpenImageIO writes files:
+// write one in the system's temporary folder, read it, and remove it.
+Result<std::string> image_file_bytes(const Image& image, const std::string& format) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("shadetree-export-" + random_token() + "." + format);
+  Status written = write_image(image, file.string());
+  bool ok = false;
+  const std::string bytes = written ? read_file(file, &ok) : std::string();
+  std::error_code ignored;
+  std::filesystem::remove(file, ignored);
+  if (!written) return written.error();
+  if (!ok) return failure("cannot read back the exported image");
+  return bytes;
+}
+
 }  // namespace
 
 EditorServer::EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor)
@@ -193,35 +244,27 @@ void EditorServer::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void EditorServer::add_routes() {
-  httplib::Server& http = *server_;
+struct EditorServer::Rendered {
+  Image image;
+  PreviewKernel::Source kernel;
+  double compile_milliseconds;  // graph text to a kernel that runs
+};
 
-  // Every request: the Host must be ours, and the token must come along.
+void EditorServer::add_routes() {
+  add_request_guards();
+  add_editor_file_routes();
+  add_node_library_and_stats_routes();
+  add_graph_file_routes();
+  add_check_route();
+  add_render_routes();
+}
+
+void EditorServer::add_request_guards() {
+  httplib::Server& http = *server_;
   http.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
-    const std::string host = request.get_header_value("Host");
-    const std::string port = ":" + std::to_string(port_);
-    bool known_host = false;
-    for (const std::string& name : {options_.host, std::string("localhost"), std::string("127.0.0.1"),
-                                    std::string("[::1]"), "[" + options_.host + "]"})
-      known_host |= host == name + port;
-    if (!known_host) {
-      send_error(response, 403, "the Host header \"" + host + "\" is not this server's");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    // The cookie rides on requests that other pages of this machine make
-    // (a text/plain POST from another port is same-site and needs no
-    // preflight), so it only lets the page and its files load and graphs be
-    // read. Every other request compiles, renders or writes, and must name
-    // the token itself, in the URL or in a header no other page can set.
-    std::string token = request.get_param_value("token");
-    if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
-    if (same_secret(token, options_.token)) return httplib::Server::HandlerResponse::Unhandled;
-    const bool reads = request.method == "GET" || request.method == "HEAD";
-    if (reads && same_secret(cookie_value(request, token_cookie), options_.token))
-      return httplib::Server::HandlerResponse::Unhandled;
-    send_error(response, 403,
-               reads ? "missing or wrong token: open the URL shadetree serve printed"
-                     : "this request needs the token in the URL or the X-Shadetree-Token header, not only the cookie");
+    const std::optional<std::string> refusal = access_refusal(request);
+    if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
+    send_error(response, 403, *refusal);
     return httplib::Server::HandlerResponse::Handled;
   });
   http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
@@ -234,29 +277,61 @@ void EditorServer::add_routes() {
                                                          : "bad request";
     send_error(response, response.status, message);
   });
+}
 
-  auto serve_file = [this](httplib::Response& response, const std::string& relative) {
-    Result<std::filesystem::path> path = editor_.resolve(relative);
-    bool ok = false;
-    const std::string content = path ? read_file(*path, &ok) : std::string();
-    if (!path || !ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such file");
-    response.set_content(content, content_type(*path).c_str());
-  };
-  http.Get("/", [this, serve_file](const httplib::Request&, httplib::Response& response) {
-    serve_file(response, "index.html");
+// Against DNS rebinding: a page whose site's name comes to resolve to this
+// machine still sends that name as the Host.
+bool EditorServer::is_own_host(const std::string& host) const {
+  const std::string port = ":" + std::to_string(port_);
+  for (const std::string& name : {options_.host, std::string("localhost"), std::string("127.0.0.1"),
+                                  std::string("[::1]"), "[" + options_.host + "]"})
+    if (host == name + port) return true;
+  return false;
+}
+
+// Every request: the Host must be ours, and the token must come along.
+std::optional<std::string> EditorServer::access_refusal(const httplib::Request& request) const {
+  const std::string host = request.get_header_value("Host");
+  if (!is_own_host(host)) return "the Host header \"" + host + "\" is not this server's";
+  // The cookie rides on requests that other pages of this machine make
+  // (a text/plain POST from another port is same-site and needs no
+  // preflight), so it only lets the page and its files load and graphs be
+  // read. Every other request compiles, renders or writes, and must name
+  // the token itself, in the URL or in a header no other page can set.
+  std::string token = request.get_param_value("token");
+  if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
+  if (same_secret(token, options_.token)) return std::nullopt;
+  const bool reads = request.method == "GET" || request.method == "HEAD";
+  if (reads && same_secret(cookie_value(request, token_cookie), options_.token)) return std::nullopt;
+  return reads ? "missing or wrong token: open the URL shadetree serve printed"
+               : "this request needs the token in the URL or the X-Shadetree-Token header, not only the cookie";
+}
+
+void EditorServer::add_editor_file_routes() {
+  httplib::Server& http = *server_;
+  http.Get("/", [this](const httplib::Request&, httplib::Response& response) {
+    serve_editor_file(response, "index.html");
     response.set_header("Set-Cookie", std::string(token_cookie) + "=" + options_.token +
                                           "; Path=/; HttpOnly; SameSite=Strict");
     response.set_header("Cache-Control", "no-store");
   });
-  http.Get(R"(/assets/(.+))", [serve_file](const httplib::Request& request, httplib::Response& response) {
-    serve_file(response, request.matches[1]);
+  http.Get(R"(/assets/(.+))", [this](const httplib::Request& request, httplib::Response& response) {
+    serve_editor_file(response, request.matches[1]);
   });
+}
 
+void EditorServer::serve_editor_file(httplib::Response& response, const std::string& relative) const {
+  Result<std::filesystem::path> path = editor_.resolve(relative);
+  bool ok = false;
+  const std::string content = path ? read_file(*path, &ok) : std::string();
+  if (!path || !ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such file");
+  response.set_content(content, content_type(*path).c_str());
+}
+
+void EditorServer::add_node_library_and_stats_routes() {
+  httplib::Server& http = *server_;
   http.Get("/api/nodes", [](const httplib::Request&, httplib::Response& response) {
     send_json(response, node_library_json());
-  });
-  http.Get("/api/graphs", [this](const httplib::Request&, httplib::Response& response) {
-    send_json(response, {{"graphs", graphs_.graph_files()}});
   });
   http.Get("/api/stats", [this](const httplib::Request&, httplib::Response& response) {
     send_json(response, {{"compiles", kernels_.compiles()},
@@ -265,19 +340,14 @@ void EditorServer::add_routes() {
                          {"rendering", rendering_.load()},
                          {"kernels", resident_kernel_count()}});
   });
+}
 
-  // The graph file a request names, or the served folder's untitled.json.
-  auto graph_path = [this](const httplib::Request& request, bool named) -> Result<std::filesystem::path> {
-    if (!request.has_param("path")) {
-      if (named) return invalid_input("the request needs ?path=FILE.json");
-      return graphs_.path() / "untitled.json";
-    }
-    Result<std::filesystem::path> path = graphs_.resolve(request.get_param_value("path"));
-    if (path && path->extension() != ".json") return invalid_input("graph files end in .json");
-    return path;
-  };
-
-  http.Get("/api/graph", [graph_path](const httplib::Request& request, httplib::Response& response) {
+void EditorServer::add_graph_file_routes() {
+  httplib::Server& http = *server_;
+  http.Get("/api/graphs", [this](const httplib::Request&, httplib::Response& response) {
+    send_json(response, {{"graphs", graphs_.graph_files()}});
+  });
+  http.Get("/api/graph", [this](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, true);
     if (!path) return send_error(response, 400, path.error().message);
     bool ok = false;
@@ -285,8 +355,7 @@ void EditorServer::add_routes() {
     if (!ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such graph file");
     response.set_content(text, "application/json");
   });
-
-  http.Put("/api/graph", [graph_path](const httplib::Request& request, httplib::Response& response) {
+  http.Put("/api/graph", [this](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, true);
     if (!path) return send_error(response, 400, path.error().message);
     if (request.get_param_value("new") == "1" && std::filesystem::exists(*path))
@@ -301,69 +370,31 @@ void EditorServer::add_routes() {
     if (!written) return send_error(response, 500, written.error().message);
     send_json(response, {{"saved", request.get_param_value("path")}});
   });
+}
 
-  http.Post("/api/check", [this, graph_path](const httplib::Request& request, httplib::Response& response) {
+Result<std::filesystem::path> EditorServer::graph_path(const httplib::Request& request, bool named) const {
+  if (!request.has_param("path")) {
+    if (named) return invalid_input("the request needs ?path=FILE.json");
+    return graphs_.path() / "untitled.json";
+  }
+  Result<std::filesystem::path> path = graphs_.resolve(request.get_param_value("path"));
+  if (path && path->extension() != ".json") return invalid_input("graph files end in .json");
+  return path;
+}
+
+void EditorServer::add_check_route() {
+  server_->Post("/api/check", [this](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, false);
     if (!path) return send_error(response, 400, path.error().message);
     Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, files_);
     if (!loaded) return send_json(response, {{"ok", false}, {"error", diagnostic_json(loaded.error())}});
     send_json(response, {{"ok", true}});
   });
+}
 
-  // Renders the request's body (a graph, or a node of it with node=) at
-  // width x height up to `max_side`, or sends the error and returns nothing.
-  struct Rendered {
-    Image image;
-    PreviewKernel::Source kernel;
-    double compile_milliseconds;  // graph text to a kernel that runs
-  };
-  auto render_body = [this, graph_path](const httplib::Request& request, httplib::Response& response,
-                                        int max_side) -> std::optional<Rendered> {
-    Result<std::filesystem::path> path = graph_path(request, false);
-    if (!path) return send_error(response, 400, path.error().message), std::nullopt;
-    PreviewRequest preview;
-    for (auto [name, target] : {std::pair{"width", &preview.width}, std::pair{"height", &preview.height}}) {
-      Result<int> side = integer_parameter(request, name, 256, 1, max_side);
-      if (!side) return send_error(response, 400, side.error().message), std::nullopt;
-      *target = *side;
-    }
-    Result<int> frame = integer_parameter(request, "frame", 0, 0, 1000000);
-    if (!frame) return send_error(response, 400, frame.error().message), std::nullopt;
-    preview.frame = static_cast<float>(*frame);
-    preview.draft = request.get_param_value("draft") == "1";
-    const std::string slot = request.get_param_value("slot");
-    if (slot.size() > 100) return send_error(response, 400, "slot names are at most 100 characters"), std::nullopt;
-    auto unprocessable = [&](const Diagnostic& diagnostic) {
-      response.status = 422;
-      send_json(response, {{"error", diagnostic.to_string()}, {"diagnostic", diagnostic_json(diagnostic)}});
-      return std::nullopt;
-    };
-    const auto start = std::chrono::steady_clock::now();
-    std::string body = request.body;
-    if (request.has_param("node")) {
-      Result<std::string> probe = node_probe_graph(body, path->string(), request.get_param_value("node"), files_,
-                                                   request.get_param_value("function"));
-      if (!probe) return unprocessable(probe.error());
-      body = std::move(*probe);
-    }
-    Result<LoadedGraph> loaded = compile_graph_text(body, path->string(), {}, {}, files_);
-    if (!loaded) return unprocessable(loaded.error());
-    Result<PreviewKernel> kernel = kernels_.kernel_for(loaded->ir);
-    if (!kernel) return send_error(response, 500, kernel.error().to_string()), std::nullopt;
-    const double compile_milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
-    preview.cancel = cancel.get();
-    ++rendering_;
-    Result<Image> image = render_preview(*loaded, *kernel->kernel, preview);
-    --rendering_;
-    if (cancel) release_slot(slot, cancel);
-    if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
-    if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
-    return Rendered{std::move(*image), kernel->source, compile_milliseconds};
-  };
-
-  http.Post("/api/preview", [this, render_body](const httplib::Request& request, httplib::Response& response) {
+void EditorServer::add_render_routes() {
+  httplib::Server& http = *server_;
+  http.Post("/api/preview", [this](const httplib::Request& request, httplib::Response& response) {
     const auto start = std::chrono::steady_clock::now();
     std::optional<Rendered> rendered = render_body(request, response, options_.max_preview_side);
     if (!rendered) return;
@@ -372,34 +403,46 @@ void EditorServer::add_routes() {
     response.set_header("X-Width", std::to_string(rendered->image.width));
     response.set_header("X-Height", std::to_string(rendered->image.height));
     response.set_header("X-Kernel", source_name(rendered->kernel));
-    const double milliseconds =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    response.set_header("X-Milliseconds", std::to_string(milliseconds));
+    response.set_header("X-Milliseconds", std::to_string(milliseconds_since(start)));
     response.set_header("X-Compile-Milliseconds", std::to_string(rendered->compile_milliseconds));
   });
-
-  http.Post("/api/export", [this, render_body, graph_path](const httplib::Request& request,
-                                                           httplib::Response& response) {
+  http.Post("/api/export", [this](const httplib::Request& request, httplib::Response& response) {
     const std::string format = request.has_param("format") ? request.get_param_value("format") : "png";
     if (format != "png" && format != "exr") return send_error(response, 400, "format must be png or exr");
     std::optional<Rendered> rendered = render_body(request, response, options_.max_export_side);
     if (!rendered) return;
-    // OpenImageIO writes files: write one in the system's temporary folder,
-    // send it, and remove it.
-    const std::filesystem::path file =
-        std::filesystem::temp_directory_path() / ("shadetree-export-" + random_token() + "." + format);
-    Status written = write_image(rendered->image, file.string());
-    bool ok = false;
-    const std::string bytes = written ? read_file(file, &ok) : std::string();
-    std::error_code ignored;
-    std::filesystem::remove(file, ignored);
-    if (!written) return send_error(response, 500, written.error().message);
-    if (!ok) return send_error(response, 500, "cannot read back the exported image");
+    Result<std::string> bytes = image_file_bytes(rendered->image, format);
+    if (!bytes) return send_error(response, 500, bytes.error().message);
     const Result<std::filesystem::path> path = graph_path(request, false);
     const std::string stem = path ? path->stem().string() : "untitled";
-    response.set_content(bytes, format == "png" ? "image/png" : "image/x-exr");
+    response.set_content(*bytes, format == "png" ? "image/png" : "image/x-exr");
     response.set_header("Content-Disposition", "attachment; filename=\"" + stem + "." + format + "\"");
   });
+}
+
+std::optional<EditorServer::Rendered> EditorServer::render_body(const httplib::Request& request,
+                                                                httplib::Response& response, int max_side) {
+  Result<std::filesystem::path> path = graph_path(request, false);
+  if (!path) return send_error(response, 400, path.error().message), std::nullopt;
+  Result<PreviewRequest> preview = preview_request(request, max_side);
+  if (!preview) return send_error(response, 400, preview.error().message), std::nullopt;
+  const std::string slot = request.get_param_value("slot");
+  if (slot.size() > 100) return send_error(response, 400, "slot names are at most 100 characters"), std::nullopt;
+  const auto start = std::chrono::steady_clock::now();
+  Result<LoadedGraph> loaded = load_body(request, *path, files_);
+  if (!loaded) return send_unprocessable(response, loaded.error()), std::nullopt;
+  Result<PreviewKernel> kernel = kernels_.kernel_for(loaded->ir);
+  if (!kernel) return send_error(response, 500, kernel.error().to_string()), std::nullopt;
+  const double compile_milliseconds = milliseconds_since(start);
+  const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
+  preview->cancel = cancel.get();
+  ++rendering_;
+  Result<Image> image = render_preview(*loaded, *kernel->kernel, *preview);
+  --rendering_;
+  if (cancel) release_slot(slot, cancel);
+  if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
+  if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
+  return Rendered{std::move(*image), kernel->source, compile_milliseconds};
 }
 
 std::shared_ptr<std::atomic<bool>> EditorServer::claim_slot(const std::string& slot) {

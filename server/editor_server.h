@@ -47,9 +47,11 @@
 #pragma once
 
 #include <atomic>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -62,6 +64,8 @@
 
 namespace httplib {
 class Server;
+struct Request;
+struct Response;
 }
 
 namespace shadetree {
@@ -94,8 +98,26 @@ class EditorServer {
   void stop();  // and waits for the server's thread
 
  private:
+  struct Rendered;  // a request's body rendered (editor_server.cpp)
+
   EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor);
   void add_routes();
+  void add_request_guards();  // Host and token checks; every error as JSON
+  void add_editor_file_routes();
+  void add_node_library_and_stats_routes();
+  void add_graph_file_routes();
+  void add_check_route();
+  void add_render_routes();  // preview and export
+
+  bool is_own_host(const std::string& host) const;
+  // Why the request is refused, or nothing if it may go on.
+  std::optional<std::string> access_refusal(const httplib::Request& request) const;
+  void serve_editor_file(httplib::Response& response, const std::string& relative) const;
+  // The graph file a request names, or (unless `named`) the served folder's untitled.json.
+  Result<std::filesystem::path> graph_path(const httplib::Request& request, bool named) const;
+  // Renders the request's body (a graph, or a node of it with node=) at
+  // width x height up to `max_side`, or sends the error and returns nothing.
+  std::optional<Rendered> render_body(const httplib::Request& request, httplib::Response& response, int max_side);
   // The slot's flag, raised to cancel the render of its previous request.
   std::shared_ptr<std::atomic<bool>> claim_slot(const std::string& slot);
   void release_slot(const std::string& slot, const std::shared_ptr<std::atomic<bool>>& flag);
