@@ -115,13 +115,8 @@ shadetree_status shadetree_load_text(const char* json, const char* name, int bac
 void shadetree_free(shadetree_graph* graph) { delete graph; }
 
 const char* shadetree_kind(const shadetree_graph* graph) {
-  if (!graph) return "";
-  switch (graph->loaded.graph->kind) {
-    case GraphKind::texture: return "texture";
-    case GraphKind::surface: return "surface";
-    case GraphKind::volume: return "volume";
-  }
-  return "";
+  // A kind's name views a string literal of nodes/graph_kind.h, so it ends in a NUL.
+  return graph ? graph_kind_name(graph->loaded.graph->kind).data() : "";
 }
 
 shadetree_status shadetree_set_param(shadetree_graph* graph, const char* name, const char* value) {

@@ -33,14 +33,11 @@ std::string_view output_id_name(OutputId id) {
   return names[static_cast<int>(id)];
 }
 
-std::span<const OutputSpec> output_contract(GraphKind kind) {
-  switch (kind) {
-    case GraphKind::texture: return texture_outputs;
-    case GraphKind::surface: return surface_outputs;
-    case GraphKind::volume: return volume_outputs;
-  }
-  return {};
-}
+// In the order of the kinds (nodes/graph_kind.h).
+constexpr std::span<const OutputSpec> contracts[] = {texture_outputs, surface_outputs, volume_outputs};
+static_assert(std::size(contracts) == graph_kind_count, "an output contract for every kind");
+
+std::span<const OutputSpec> output_contract(GraphKind kind) { return contracts[static_cast<int>(kind)]; }
 
 const OutputSpec* find_output_spec(GraphKind kind, std::string_view name) {
   for (const OutputSpec& spec : output_contract(kind))

@@ -45,7 +45,7 @@ nlohmann::json node_library_json() {
                                     {"choices", attribute.choices},
                                     {"doc", attribute.doc}});
     if (!json.contains("attributes")) json["attributes"] = nlohmann::json::array();
-    for (GraphKind kind : {GraphKind::texture, GraphKind::surface, GraphKind::volume})
+    for (GraphKind kind : all_graph_kinds)
       if (op.kinds.contains(kind)) json["kinds"].push_back(std::string(graph_kind_name(kind)));
     ops.push_back(std::move(json));
   }
