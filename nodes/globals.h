@@ -27,7 +27,8 @@ enum class Variability : std::uint8_t { uniform, varying };
   X(P, vec3, varying, every_kind, "sample position (object or texture space)")                                    \
   X(N, vec3, varying, every_kind, "surface normal at the sample (+z for textures)")                                \
   X(uv, vec2, varying, every_kind, "texture coordinates in [0,1]^2")                                               \
-  X(I, vec3, varying, surface_kind | volume_kind, "unit direction from the eye to the sample (the ray direction)") \
+  X(I, vec3, varying, surface_kind | volume_kind | environment_kind,                                              \
+    "unit direction from the eye to the sample (the ray direction)")                                              \
   X(surface, int_, varying, surface_kind, "id of the object the sample lies on")                                   \
   X(filter_width, float_, varying, every_kind,                                                                     \
     "sample footprint: pixel size in the units of P, for frequency clamping")                                      \

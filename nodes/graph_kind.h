@@ -35,7 +35,10 @@ inline constexpr std::pair<RenderSection, std::string_view> render_section_field
   X(surface, section_size | section_frame | section_scene, 0,                                                         \
     "a surface shader run at the visible points of a scene's objects (Perlin 1985, Rhoades et al. 1992)")          \
   X(volume, section_size | section_frame | section_scene | section_volume, section_volume,                             \
-    "a density marched through a bounded volume (Perlin & Hoffert 1989)")
+    "a density marched through a bounded volume (Perlin & Hoffert 1989)")                                         \
+  X(environment, section_size | section_frame, 0,                                                                  \
+    "a colour for every view direction I, rendered as a latitude-longitude panorama; a surface or volume "         \
+    "scene names one as its background")
 
 enum class GraphKind : std::uint8_t {
 #define SHADETREE_GRAPH_KIND_ENUMERATOR(name, takes, needs, doc) name,
@@ -106,5 +109,6 @@ inline constexpr KindSet every_kind{static_cast<std::uint8_t>((1 << graph_kind_c
 inline constexpr KindSet texture_kind = kinds_of(GraphKind::texture);
 inline constexpr KindSet surface_kind = kinds_of(GraphKind::surface);
 inline constexpr KindSet volume_kind = kinds_of(GraphKind::volume);
+inline constexpr KindSet environment_kind = kinds_of(GraphKind::environment);
 
 }  // namespace shadetree

@@ -24,6 +24,10 @@ constexpr OutputSpec volume_outputs[] = {
     {OutputId::ior, "ior", Type::float_, false, "refractive index, for refraction where it changes"},
 };
 
+constexpr OutputSpec environment_outputs[] = {
+    {OutputId::color, "color", Type::color, true, "the colour seen in direction I"},
+};
+
 }  // namespace
 
 std::string_view output_id_name(OutputId id) {
@@ -34,7 +38,8 @@ std::string_view output_id_name(OutputId id) {
 }
 
 // In the order of the kinds (nodes/graph_kind.h).
-constexpr std::span<const OutputSpec> contracts[] = {texture_outputs, surface_outputs, volume_outputs};
+constexpr std::span<const OutputSpec> contracts[] = {texture_outputs, surface_outputs, volume_outputs,
+                                                     environment_outputs};
 static_assert(std::size(contracts) == graph_kind_count, "an output contract for every kind");
 
 std::span<const OutputSpec> output_contract(GraphKind kind) { return contracts[static_cast<int>(kind)]; }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "render/environment_driver.h"
 #include "render/surface_driver.h"
 #include "render/texture_driver.h"
 #include "render/volume_driver.h"
@@ -15,6 +16,7 @@ constexpr GraphKindDriver drivers[] = {
     {GraphKind::surface, option_samples_per_pixel | option_object | option_no_shadows, "rendering", "samples", true,
      prepare_surface},
     {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume},
+    {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment},
 };
 static_assert(std::size(drivers) == graph_kind_count, "a driver for every kind of nodes/graph_kind.h");
 static_assert([] {
