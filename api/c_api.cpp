@@ -192,8 +192,8 @@ shadetree_status shadetree_render(shadetree_graph* graph, int width, int height,
 
 shadetree_status shadetree_render_texture(shadetree_graph* graph, int width, int height, float frame, float* rgba) {
   if (graph && graph->loaded.graph->kind != GraphKind::texture)
-    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: " + graph->loaded.graph->file + " is a " +
-                                                    shadetree_kind(graph) + " graph, not a texture graph");
+    return fail_with(ExitStatus::invalid_input, "shadetree_render_texture: " + graph->loaded.graph->file + " is " +
+                                                    a_graph_of(graph->loaded.graph->kind) + ", not a texture graph");
   return shadetree_render(graph, width, height, frame, rgba);
 }
 

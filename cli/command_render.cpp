@@ -1,7 +1,6 @@
-// shadetree render FILE -o OUT.png|OUT.exr: render a texture graph over its
-// domain, a surface graph on its scene (or a preview object), or a volume
-// graph through the ray marcher; one frame, or a numbered sequence with
-// --frames, from one compiled kernel.
+// shadetree render FILE -o OUT.png|OUT.exr: render a graph of any kind
+// through its driver (render/graph_kinds.h); one frame, or a numbered
+// sequence with --frames, from one compiled kernel.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -159,7 +158,7 @@ ExitStatus render(const RenderArguments& arguments) {
 }  // namespace
 
 void add_render_command(CLI::App& app, CommandRunner& run) {
-  auto* command = app.add_subcommand("render", "render a texture, surface or volume graph to a PNG or EXR image");
+  auto* command = app.add_subcommand("render", "render a graph of any kind (texture, surface, volume, environment) to a PNG or EXR image");
   auto arguments = std::make_shared<RenderArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
   command->add_option("-o,--output", arguments->output,

@@ -46,11 +46,7 @@ ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
   const Graph& graph = *loaded->graph;
   if (graph.kind != GraphKind::volume)
     return report(Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                             "voxelize samples volume graphs; this is a " + std::string(graph_kind_name(graph.kind)) +
-                                 " graph"});
-  if (!graph.render.volume)
-    return report(Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
-                             "a volume graph needs render.volume with \"bounds\" to be voxelized"});
+                             "voxelize samples volume graphs; this is " + a_graph_of(graph.kind)});
   Status writable = check_vdb_path(arguments.output);
   if (!writable) return report(writable.error());
   Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, loaded->ir, 0);

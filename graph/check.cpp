@@ -95,7 +95,7 @@ class Checker {
       callee.outputs = op->outputs;
       if (!op->kinds.contains(graph_.kind))
         fail(node.id, {}, "op \"" + op->name + "\" is only available in " + kind_set_names(op->kinds) +
-                              " graphs, this is a " + std::string(graph_kind_name(graph_.kind)) + " graph");
+                              " graphs, this is " + a_graph_of(graph_.kind));
       return callee;
     }
     auto found = function_index_.find(node.op);
@@ -488,7 +488,7 @@ class Checker {
       const bool present = std::any_of(body.outputs.begin(), body.outputs.end(),
                                        [&](const CheckedOutput& output) { return output.name == spec.name; });
       if (spec.required && !present)
-        fail({}, {}, "a " + kind + " graph needs an output \"" + std::string(spec.name) + "\"");
+        fail({}, {}, a_graph_of(graph_.kind) + " needs an output \"" + std::string(spec.name) + "\"");
     }
   }
 

@@ -126,6 +126,7 @@ FormatFields build_scene_fields(GraphKind kind) {
       {"objects", objects, every_kind, surface_kind},
       {"lights", typed_objects(scene_light_types, scene_light_fields, kind, max_scene_lights)},
       {"background", colour()},
+      {"environment", {{"type", "string"}, {"minLength", 1}}},
       {"ambient", colour()},
       {"lighting", {{"enum", {"lit", "none"}}}},
       {"shadows", {{"type", "boolean"}}},

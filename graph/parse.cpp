@@ -59,7 +59,7 @@ class Parser : JsonReader {
     for (const auto& [section, field] : render_section_fields)
       if ((graph_kind_def(graph.kind).needed_sections & section) &&
           !(document.contains("render") && document["render"].contains(field)))
-        fail({}, {}, "a " + kind + " graph needs render." + std::string(field) + " to be rendered");
+        fail({}, {}, a_graph_of(graph.kind) + " needs render." + std::string(field) + " to be rendered");
     return graph;
   }
 

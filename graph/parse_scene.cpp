@@ -42,6 +42,10 @@ class SceneParser {
       result.lights = default_lights();
     }
     if (scene.contains("background")) result.background = color(scene["background"], "scene background");
+    if (scene.contains("environment")) {
+      result.environment = reader_.required_string(scene, "environment", {});
+      if (result.environment.empty()) fail("scene environment must name an environment graph file");
+    }
     if (scene.contains("ambient")) result.ambient = color(scene["ambient"], "scene ambient");
     if (scene.contains("lighting")) {
       const json& lighting = scene["lighting"];

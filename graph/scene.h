@@ -59,6 +59,7 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   std::vector<LightDesc> lights;
   std::array<float, 3> background{0.16f, 0.17f, 0.19f};
+  std::string environment;  // an environment graph's file, as written: seen behind everything instead of `background`
   std::array<float, 3> ambient{0.06f, 0.06f, 0.07f};
   Lighting lighting = Lighting::lit;
   bool shadows = true;

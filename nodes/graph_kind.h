@@ -105,6 +105,12 @@ inline std::string kind_set_names(KindSet kinds) {
   return names;
 }
 
+// "a texture graph", "an environment graph": a graph of `kind` in a sentence.
+inline std::string a_graph_of(GraphKind kind) {
+  const std::string_view name = graph_kind_name(kind);
+  return std::string(name.find_first_of("aeiou") == 0 ? "an " : "a ") + std::string(name) + " graph";
+}
+
 inline constexpr KindSet every_kind{static_cast<std::uint8_t>((1 << graph_kind_count) - 1)};
 inline constexpr KindSet texture_kind = kinds_of(GraphKind::texture);
 inline constexpr KindSet surface_kind = kinds_of(GraphKind::surface);

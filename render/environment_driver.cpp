@@ -125,8 +125,8 @@ Result<std::shared_ptr<const EnvironmentBackground>> EnvironmentBackground::load
   if (!loaded) return loaded.error();
   if (loaded->graph->kind != GraphKind::environment)
     return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {},
-                      "scene environment " + file + " is a " + std::string(graph_kind_name(loaded->graph->kind)) +
-                          " graph, not an environment graph"};
+                      "scene environment " + file + " is " + a_graph_of(loaded->graph->kind) +
+                          ", not an environment graph"};
   auto background = std::make_shared<EnvironmentBackground>();
   Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(loaded->ir);
   if (!kernel) return kernel.error();
@@ -134,6 +134,12 @@ Result<std::shared_ptr<const EnvironmentBackground>> EnvironmentBackground::load
   background->params_ = std::move(loaded->params);
   background->kernel_ = std::move(*kernel);
   return std::shared_ptr<const EnvironmentBackground>(std::move(background));
+}
+
+Result<std::shared_ptr<const EnvironmentBackground>> EnvironmentBackground::of_scene(
+    const SceneDesc& scene, const std::string& graph_file, const std::vector<std::string>& search_paths) {
+  if (scene.environment.empty()) return std::shared_ptr<const EnvironmentBackground>();
+  return load(scene.environment, graph_file, search_paths);
 }
 
 Result<Image> EnvironmentBackground::seen_by(const Camera& camera, int width, int height, float frame,

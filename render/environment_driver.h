@@ -14,6 +14,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "graph/scene.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
 #include "render/graph_kinds.h"
@@ -46,6 +47,11 @@ Result<Image> render_environment(const Kernel& kernel, const std::vector<float>&
 // An environment graph compiled (by the JIT) as a scene's background.
 class EnvironmentBackground {
  public:
+  // The environment `scene` names, or null where it names none.
+  static Result<std::shared_ptr<const EnvironmentBackground>> of_scene(const SceneDesc& scene,
+                                                                        const std::string& graph_file,
+                                                                        const std::vector<std::string>& search_paths);
+
   // `file` as a scene names it, found as the scene's meshes are
   // (io/resource_path.h), and refused unless it is an environment graph.
   static Result<std::shared_ptr<const EnvironmentBackground>> load(const std::string& file,

@@ -69,11 +69,10 @@ const GraphKindDriver& graph_kind_driver(GraphKind kind) { return drivers[static
 
 Result<std::unique_ptr<FrameRenderer>> prepare_render(const Graph& graph, const RenderRequest& request) {
   const GraphKindDriver& driver = graph_kind_driver(graph.kind);
-  const std::string kind(graph_kind_name(graph.kind));
   for (const auto& [option, name] : option_names)
     if ((request.options() & option) && !(driver.options & option))
       return Diagnostic{ExitStatus::invalid_input, graph.file, {}, {},
-                        std::string(name) + " is for " + kinds_taking(option) + " graphs; this is a " + kind + " graph"};
+                        std::string(name) + " is for " + kinds_taking(option) + " graphs; this is " + a_graph_of(graph.kind)};
   Result<std::unique_ptr<FrameRenderer>> prepared = driver.prepare(graph, request);
   if (!prepared && prepared.error().file.empty()) {
     Diagnostic named = prepared.error();

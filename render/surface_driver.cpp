@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/environment_driver.h"
 #include "scene/lighting.h"
 #include "scene/preview_scene.h"
 #include "render/pixel_hash.h"
@@ -75,8 +76,10 @@ void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3&
 
 class SurfaceFrames : public FrameRenderer {
  public:
-  SurfaceFrames(Scene scene, const SurfaceView& view, const RenderRequest& request)
-      : scene_(std::move(scene)), camera_(scene_.desc().camera, view.width, view.height), view_(view) {
+  SurfaceFrames(Scene scene, std::shared_ptr<const EnvironmentBackground> environment, const SurfaceView& view,
+                const RenderRequest& request)
+      : scene_(std::move(scene)), environment_(std::move(environment)),
+        camera_(scene_.desc().camera, view.width, view.height), view_(view) {
     options_.threads = request.threads;
     options_.shadows = request.shadows;
     options_.cancel = request.cancel;
@@ -88,6 +91,11 @@ class SurfaceFrames : public FrameRenderer {
     view.frame = frame;
     SurfaceRenderOptions options = options_;
     options.progress = progress;
+    Result<Image> background =
+        environment_ ? environment_->seen_by(camera_, view.width, view.height, frame, {options.threads, {}, options.cancel})
+                     : Image{};
+    if (!background) return background.error();
+    if (environment_) options.background = &*background;
     SurfaceRenderStats stats;
     Result<Image> image = render_surface(kernel, params, scene_, camera_, view, options, &stats);
     report.kernel_samples = stats.visible_samples;
@@ -112,6 +120,7 @@ class SurfaceFrames : public FrameRenderer {
 
  private:
   Scene scene_;
+  std::shared_ptr<const EnvironmentBackground> environment_;  // null: the scene's background colour
   Camera camera_;
   SurfaceView view_;
   SurfaceRenderOptions options_;
@@ -283,11 +292,13 @@ Result<std::unique_ptr<FrameRenderer>> prepare_surface(const Graph& graph, const
   if (!desc) return desc.error();
   Result<Scene> scene = Scene::build(*desc, graph.file, search_paths);
   if (!scene) return scene.error();
+  auto environment = EnvironmentBackground::of_scene(*desc, graph.file, search_paths);
+  if (!environment) return environment.error();
   SurfaceView view;
   view.width = request.size ? request.size->first : graph.render.width;
   view.height = request.size ? request.size->second : graph.render.height;
   view.samples_per_pixel = request.samples_per_pixel;
-  return std::unique_ptr<FrameRenderer>(std::make_unique<SurfaceFrames>(std::move(*scene), view, request));
+  return std::unique_ptr<FrameRenderer>(std::make_unique<SurfaceFrames>(std::move(*scene), std::move(*environment), view, request));
 }
 
 }  // namespace shadetree

@@ -10,6 +10,7 @@
 
 #include "graph/parse_volume.h"
 #include "render/density_gradient.h"
+#include "render/environment_driver.h"
 #include "schedule/image_tiles.h"
 #include "scene/lighting.h"
 #include "render/pixel_hash.h"
@@ -491,9 +492,10 @@ class Marcher {
 
 class VolumeFrames : public FrameRenderer {
  public:
-  VolumeFrames(Scene scene, const VolumeDesc& volume, const VolumeView& view, const VolumeRenderOptions& options)
-      : scene_(std::move(scene)), camera_(scene_.desc().camera, view.width, view.height), volume_(volume),
-        view_(view), options_(options) {}
+  VolumeFrames(Scene scene, std::shared_ptr<const EnvironmentBackground> environment, const VolumeDesc& volume,
+               const VolumeView& view, const VolumeRenderOptions& options)
+      : scene_(std::move(scene)), environment_(std::move(environment)),
+        camera_(scene_.desc().camera, view.width, view.height), volume_(volume), view_(view), options_(options) {}
 
   Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
                              const ProgressCallback& progress, FrameReport& report) const override {
@@ -501,6 +503,11 @@ class VolumeFrames : public FrameRenderer {
     view.frame = frame;
     VolumeRenderOptions options = options_;
     options.progress = progress;
+    Result<Image> background =
+        environment_ ? environment_->seen_by(camera_, view.width, view.height, frame, {options.threads, {}, options.cancel})
+                     : Image{};
+    if (!background) return background.error();
+    if (environment_) options.background = &*background;
     VolumeRenderStats stats;
     Result<Image> image = render_volume(kernel, params, scene_, volume_, camera_, view, options, &stats);
     report.kernel_samples = stats.density_samples;
@@ -527,6 +534,7 @@ class VolumeFrames : public FrameRenderer {
 
  private:
   Scene scene_;
+  std::shared_ptr<const EnvironmentBackground> environment_;  // null: the scene's background colour
   Camera camera_;
   VolumeDesc volume_;
   VolumeView view_;
@@ -619,8 +627,11 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   if (request.step)
     if (std::string problem = step_problem(volume, *request.step, "--step"); !problem.empty())
       return invalid_input(problem);
-  Result<Scene> scene = Scene::build(volume_scene(graph.render.scene), graph.file, request.search_paths);
+  const SceneDesc desc = volume_scene(graph.render.scene);
+  Result<Scene> scene = Scene::build(desc, graph.file, request.search_paths);
   if (!scene) return scene.error();
+  auto environment = EnvironmentBackground::of_scene(desc, graph.file, request.search_paths);
+  if (!environment) return environment.error();
   VolumeView view;
   view.width = request.size ? request.size->first : graph.render.width;
   view.height = request.size ? request.size->second : graph.render.height;
@@ -632,7 +643,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.shadows = request.shadows;
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;
-  return std::unique_ptr<FrameRenderer>(std::make_unique<VolumeFrames>(std::move(*scene), volume, view, options));
+  return std::unique_ptr<FrameRenderer>(std::make_unique<VolumeFrames>(std::move(*scene), std::move(*environment), volume, view, options));
 }
 
 }  // namespace shadetree

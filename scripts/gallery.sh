@@ -10,7 +10,7 @@ index=out/gallery/index.html
 {
   echo '<!doctype html><meta charset="utf-8"><title>shadetree gallery</title>'
   echo '<style>body{font-family:sans-serif;background:#222;color:#eee}figure{display:inline-block;margin:12px}'
-  echo 'img{width:384px;height:384px;display:block}figcaption{margin-top:4px}</style><h1>shadetree gallery</h1>'
+  echo 'img{width:384px;height:auto;display:block}figcaption{margin-top:4px}</style><h1>shadetree gallery</h1>'
 } > "$index"
 for graph in graphs/*.json; do
   name=$(basename "$graph" .json)
