@@ -12,11 +12,12 @@ namespace shadetree {
 namespace {
 
 constexpr GraphKindDriver drivers[] = {
-    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture},
+    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr},
     {GraphKind::surface, option_samples_per_pixel | option_object | option_no_shadows, "rendering", "samples", true,
-     prepare_surface},
-    {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume},
-    {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment},
+     prepare_surface, nullptr},
+    {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume,
+     volume_thumbnail},
+    {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr},
 };
 static_assert(std::size(drivers) == graph_kind_count, "a driver for every kind of nodes/graph_kind.h");
 static_assert([] {

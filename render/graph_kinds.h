@@ -16,6 +16,7 @@
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
+#include "graph/json_reader.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
 #include "schedule/progress.h"
@@ -85,6 +86,10 @@ struct GraphKindDriver {
   std::string_view progress_unit;  // "rays": what its progress counts besides tiles
   bool bench_driver;  // bench measures the driver as well as the kernel
   Result<std::unique_ptr<FrameRenderer>> (*prepare)(const Graph& graph, const RenderRequest& request);
+  // A node's thumbnail (server/node_probe.h) is a graph of this kind with
+  // the node's value as its colour; where that is not how to see it, this
+  // rewrites that graph's document. Null: it renders as it is.
+  void (*thumbnail_document)(const Graph& graph, json& document);
 };
 
 const GraphKindDriver& graph_kind_driver(GraphKind kind);

@@ -646,4 +646,22 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   return std::unique_ptr<FrameRenderer>(std::make_unique<VolumeFrames>(std::move(*scene), std::move(*environment), volume, view, options));
 }
 
+void volume_thumbnail(const Graph& graph, json& document) {
+  if (!graph.render.volume) return;
+  const VolumeDesc& volume = *graph.render.volume;
+  for (json& node : document["nodes"]) {
+    const std::string op = node.value("op", std::string());
+    if (op == "step_size") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", march_step(volume)}, {"b", 0}}}};
+    if (op == "density") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", 0}, {"b", 0}}}};
+    if (op == "I") node = {{"id", node["id"]}, {"op", "vec3"}, {"in", {{"x", 0}, {"y", 0}, {"z", -1}}}};
+  }
+  json& render = document["render"];
+  render.erase("scene");
+  render.erase("volume");
+  render["domain"] = {{"min", {volume.bounds_min[0], volume.bounds_min[1]}},
+                      {"max", {volume.bounds_max[0], volume.bounds_max[1]}}};
+  render["z"] = 0.5f * (volume.bounds_min[2] + volume.bounds_max[2]);
+  document["kind"] = "texture";
+}
+
 }  // namespace shadetree

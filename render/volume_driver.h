@@ -81,6 +81,13 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
                             const VolumeDesc& volume, const Camera& camera, const VolumeView& view,
                             const VolumeRenderOptions& options, VolumeRenderStats* stats = nullptr);
 
+// A volume node's thumbnail (the kinds table's thumbnail_document): the
+// probe graph becomes a texture over the slice through the middle of the
+// bounds, so that it needs no ray march, with what only a march provides
+// as it is there: step_size the march step, I into the slice, no incoming
+// density.
+void volume_thumbnail(const Graph& graph, json& document);
+
 // A draft's steps (RenderRequest::draft), in units of the volume's march
 // step and, for its shadow rays, of its reference step. Its density stays
 // as it is: opacity is defined per reference step.

@@ -7,7 +7,7 @@
 
 #include "graph/json_document.h"  // objects in file order, as a function's outputs must be
 #include "graph/parse.h"
-#include "graph/parse_volume.h"
+#include "render/graph_kinds.h"
 
 namespace shadetree {
 namespace {
@@ -146,24 +146,7 @@ Result<std::string> node_probe_graph(const std::string& text, const std::string&
       break;
   }
   document["outputs"] = {{"color", colour}};
-  if (graph->kind == GraphKind::volume && graph->render.volume) {
-    const VolumeDesc& volume = *graph->render.volume;
-    // What only a march provides, as it is on the slice: the march step,
-    // the view straight into it and no incoming density.
-    for (json& node : nodes) {
-      const std::string op = node.value("op", std::string());
-      if (op == "step_size") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", march_step(volume)}, {"b", 0}}}};
-      if (op == "density") node = {{"id", node["id"]}, {"op", "add"}, {"in", {{"a", 0}, {"b", 0}}}};
-      if (op == "I") node = {{"id", node["id"]}, {"op", "vec3"}, {"in", {{"x", 0}, {"y", 0}, {"z", -1}}}};
-    }
-    json& render = document["render"];
-    render.erase("scene");
-    render.erase("volume");
-    render["domain"] = {{"min", {volume.bounds_min[0], volume.bounds_min[1]}},
-                        {"max", {volume.bounds_max[0], volume.bounds_max[1]}}};
-    render["z"] = 0.5f * (volume.bounds_min[2] + volume.bounds_max[2]);
-    document["kind"] = "texture";
-  }
+  if (const auto thumbnail = graph_kind_driver(graph->kind).thumbnail_document) thumbnail(*graph, document);
   return document.dump();
 }
 

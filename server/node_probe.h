@@ -2,9 +2,8 @@
 // its outputs replaced by that node's value. Texture and surface graphs
 // show the value as their colour (a float as grey, a vec2 as red and
 // green, a vec3 as its three components, a bool as white where true);
-// a volume graph shows it as a texture over the slice through the middle
-// of its bounds, so a thumbnail needs no ray march (step_size is the march
-// step there, I looks into the slice, the incoming density is 0). Only the
+// a kind whose driver says so rewrites that graph (a volume shows the
+// value on a slice through its bounds: render/volume_driver.h). Only the
 // node and the nodes it reads are kept.
 #pragma once
 
