@@ -1,15 +1,11 @@
 // libFuzzer harness for what a graph pulls in and what a request names:
-// the bytes as an image file (OpenImageIO, by read_image) under the
+// the bytes as an image file (OpenImageIO, by read_image) or a mesh file
+// (load_mesh, which runs Assimp in the mesh reader process) under the
 // extension its first bytes suggest, and as a path into a served folder.
 // Whatever they hold: no crash or sanitizer report, one-line diagnostics,
-// images of at most four channels within the limit, and resolved paths
-// inside the folder. Built by scripts/fuzz.sh beside the graph harness.
-//
-// Mesh bytes (Assimp, by load_mesh) are fuzzed only with
-// SHADETREE_FUZZ_MESHES set: within its first runs the harness found a PLY
-// on which Assimp aborted and one on which it never returned (both refused
-// now: MeshFiles tests), and Assimp runs about 20 inputs a second, so
-// meshes stay out of the CI run until long runs come back clean.
+// images of at most four channels within the limit, meshes with finite
+// coordinates and indices in range, and resolved paths inside the folder.
+// Built by scripts/fuzz.sh beside the graph harness.
 #include <unistd.h>
 
 #include <cmath>
@@ -97,9 +93,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string extension = extension_of(bytes);
   const std::string path = (scratch() / ("input" + extension)).string();
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  static const bool meshes = std::getenv("SHADETREE_FUZZ_MESHES") != nullptr;
   if (extension != ".obj" && extension != ".ply") read_as_image(path);
-  else if (meshes) load_as_mesh(path);
+  else load_as_mesh(path);
   if (size <= 4096) resolve_as_path(bytes);
   return 0;
 }

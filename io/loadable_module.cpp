@@ -28,16 +28,17 @@ std::vector<std::filesystem::path> module_folders() {
 
 }  // namespace
 
-LoadableModule::LoadableModule(const std::string& file, const std::string& what) : what_(what) {
+std::string support_file_path(const std::string& file) {
   const std::vector<std::filesystem::path> folders = module_folders();
   for (const auto& folder : folders) {
     std::error_code error;
-    if (std::filesystem::exists(folder / file, error)) {
-      path_ = (folder / file).string();
-      break;
-    }
+    if (std::filesystem::exists(folder / file, error)) return (folder / file).string();
   }
-  if (path_.empty()) path_ = folders.empty() ? file : (folders.front() / file).string();
+  return folders.empty() ? file : (folders.front() / file).string();
+}
+
+LoadableModule::LoadableModule(const std::string& file, const std::string& what)
+    : path_(support_file_path(file)), what_(what) {
   handle_ = ::dlopen(path_.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle_) {
     const char* reason = ::dlerror();

@@ -1,6 +1,7 @@
-// Support modules loaded on first use from the folder of the running
-// executable or of libshadetree.so (libshadetree_image_io.so,
-// libshadetree_vdb.so; installed, from lib/ beside bin/): each wraps a
+// Support files sit in the folder of the running executable or of
+// libshadetree.so (installed, in lib/ beside bin/). Support modules are
+// loaded from there on first use (libshadetree_image_io.so,
+// libshadetree_vdb.so): each wraps a
 // library whose dynamic linking would cost every command's start-up
 // (OpenImageIO pulls in some 250 shared libraries, OpenVDB a few dozen
 // milliseconds), behind a small C interface.
@@ -9,6 +10,10 @@
 #include <string>
 
 namespace shadetree {
+
+// Where the support file `file` (a module, or the mesh reader program) is:
+// in the first of the folders above that holds it, else the first folder.
+std::string support_file_path(const std::string& file);
 
 class LoadableModule {
  public:

@@ -1,7 +1,18 @@
-// Mesh files through Assimp: OBJ and PLY are what the tests cover; any
-// other format Assimp reads loads too. Every mesh of the file is
-// flattened into one triangle list in the file's space.
+// Mesh files: checked here against the limits from their text, then read
+// by Assimp in a process of its own (io/mesh_reader.cpp); OBJ and PLY are
+// what the tests cover, and any other format Assimp reads loads too.
+// Every mesh of the file is flattened into one triangle list in the
+// file's space.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -9,13 +20,12 @@
 #include <sstream>
 #include <utility>
 
-#include <assimp/DefaultIOSystem.h>
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include "graph/file_path.h"
+#include "io/loadable_module.h"
 #include "io/mesh_file.h"
+#include "io/mesh_record.h"
+
+extern char** environ;
 
 namespace shadetree {
 namespace {
@@ -25,44 +35,6 @@ Diagnostic mesh_error(const std::string& path, ExitStatus status, std::string me
     if (c == '\n' || c == '\r') c = ' ';
   return Diagnostic{status, path, {}, {}, std::move(message)};
 }
-
-void append(const aiMesh& mesh, const aiMatrix4x4& transform, TriangleMesh& result, bool with_normals, bool with_uvs) {
-  const auto base = static_cast<std::uint32_t>(result.positions.size());
-  aiMatrix3x3 normal_transform(transform);
-  normal_transform.Inverse().Transpose();
-  for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
-    const aiVector3D p = transform * mesh.mVertices[i];
-    result.positions.emplace_back(p.x, p.y, p.z);
-    if (with_normals) {
-      aiVector3D n = normal_transform * mesh.mNormals[i];
-      n.Normalize();
-      result.normals.emplace_back(n.x, n.y, n.z);
-    }
-    if (with_uvs) result.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
-  }
-  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-    const aiFace& face = mesh.mFaces[f];
-    if (face.mNumIndices != 3) continue;  // points and lines left by triangulation
-    for (int k = 0; k < 3; ++k) result.indices.push_back(base + face.mIndices[k]);
-  }
-}
-
-// Assimp opens the files a mesh file names (an OBJ's mtllib, a glTF's
-// buffers) through its IOSystem: this one opens the mesh file alone, so a
-// file cannot make shadetree read /etc/shadow or anything else outside
-// the path policy. Materials are not used; a missing one is not an error.
-class MeshFileOnly : public Assimp::DefaultIOSystem {
- public:
-  explicit MeshFileOnly(std::string path) : path_(std::move(path)) {}
-  bool Exists(const char* file) const override { return path_ == file && DefaultIOSystem::Exists(file); }
-  Assimp::IOStream* Open(const char* file, const char* mode) override {
-    if (path_ != file || std::strchr(mode, 'w') || std::strchr(mode, 'a')) return nullptr;
-    return DefaultIOSystem::Open(file, mode);
-  }
-
- private:
-  std::string path_;
-};
 
 // Why Assimp must not be given an OBJ or PLY file, judged from its text:
 // more triangles or vertices than the limits (Assimp takes about 700 bytes
@@ -111,6 +83,63 @@ std::string mesh_text_problem(const std::string& path, std::uintmax_t bytes) {
   return {};
 }
 
+// A mesh reader that has not answered in this long is stopped: it has
+// spent its minute of CPU time, or it is waiting on something.
+constexpr auto mesh_reader_deadline = std::chrono::seconds(90);
+
+// Runs the mesh reader on `path` and collects its record.
+Result<TriangleMesh> read_in_mesh_reader(const std::string& path) {
+  const std::string reader = support_file_path("shadetree_mesh_reader");
+  int pipe_ends[2];
+  if (::pipe2(pipe_ends, O_CLOEXEC) != 0) return mesh_error(path, ExitStatus::failure, "cannot start the mesh reader");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], 3);  // dup2 clears close-on-exec on fd 3
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  char* const arguments[] = {const_cast<char*>(reader.c_str()), const_cast<char*>(path.c_str()), nullptr};
+  pid_t child = 0;
+  const int spawned = ::posix_spawn(&child, reader.c_str(), &actions, nullptr, arguments, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(pipe_ends[1]);
+  if (spawned != 0) {
+    ::close(pipe_ends[0]);
+    return mesh_error(path, ExitStatus::failure, "cannot run the mesh reader " + reader + ": " + std::strerror(spawned));
+  }
+  std::string record;
+  bool timed_out = false, too_large = false;
+  const auto deadline = std::chrono::steady_clock::now() + mesh_reader_deadline;
+  char buffer[1 << 16];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd readable{pipe_ends[0], POLLIN, 0};
+    if (left.count() <= 0 || ::poll(&readable, 1, static_cast<int>(left.count())) == 0) {
+      timed_out = true;
+      break;
+    }
+    const ssize_t n = ::read(pipe_ends[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    record.append(buffer, static_cast<std::size_t>(n));
+    if (record.size() > max_mesh_record_bytes) {
+      too_large = true;
+      break;
+    }
+  }
+  ::close(pipe_ends[0]);
+  if (timed_out || too_large) ::kill(child, SIGKILL);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out) return mesh_error(path, ExitStatus::invalid_input, "reading the mesh file took too long");
+  if (WIFSIGNALED(status))
+    return mesh_error(path, ExitStatus::invalid_input,
+                      std::string("the mesh reader failed on this file (") + ::strsignal(WTERMSIG(status)) + ")");
+  if (record.empty())
+    return mesh_error(path, ExitStatus::failure,
+                      "the mesh reader " + reader + " stopped with status " + std::to_string(WEXITSTATUS(status)));
+  return read_mesh_record(record, path);
+}
+
 }  // namespace
 
 Result<TriangleMesh> load_mesh(const std::string& path) {
@@ -127,65 +156,9 @@ Result<TriangleMesh> load_mesh(const std::string& path) {
   if (std::string problem = mesh_text_problem(path, bytes); !problem.empty())
     return mesh_error(path, ExitStatus::invalid_input, problem);
 
-  Assimp::Importer importer;
-  importer.SetIOHandler(new MeshFileOnly(path));  // the importer owns it
-  // Only triangles; no points or lines.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-  if (!scene || !scene->mRootNode)
-    return mesh_error(path, ExitStatus::invalid_input, std::string("cannot read mesh: ") + importer.GetErrorString());
-  // A malformed file can leave faces without corners in a mesh marked as
-  // holding polygons (a PLY with an unknown property type did), on which
-  // Assimp's triangulation asserts and so aborts the process: they are
-  // dropped, and the mesh's primitive types taken from the faces left.
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    aiMesh& mesh = *scene->mMeshes[m];
-    unsigned kept = 0, types = 0;
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-      const unsigned corners = mesh.mFaces[f].mNumIndices;
-      if (corners == 0) continue;
-      types |= corners == 1   ? aiPrimitiveType_POINT
-               : corners == 2 ? aiPrimitiveType_LINE
-               : corners == 3 ? aiPrimitiveType_TRIANGLE
-                              : aiPrimitiveType_POLYGON;
-      std::swap(mesh.mFaces[kept++], mesh.mFaces[f]);
-    }
-    mesh.mNumFaces = kept;
-    mesh.mPrimitiveTypes = types;
-  }
-  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
-  if (!scene || !scene->mRootNode)
-    return mesh_error(path, ExitStatus::invalid_input, std::string("cannot read mesh: ") + importer.GetErrorString());
-
-  // Normals and uvs only where every mesh of the file has them.
-  bool with_normals = true, with_uvs = true;
-  std::size_t triangles = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    with_normals = with_normals && scene->mMeshes[m]->HasNormals();
-    with_uvs = with_uvs && scene->mMeshes[m]->HasTextureCoords(0);
-    triangles += scene->mMeshes[m]->mNumFaces;
-  }
-  if (triangles > max_mesh_triangles)
-    return mesh_error(path, ExitStatus::invalid_input,
-                      "mesh has more than " + std::to_string(max_mesh_triangles) + " triangles");
-
-  TriangleMesh result;
-  // Walk the node tree without recursion (a hostile file may nest deeply).
-  std::vector<std::pair<const aiNode*, aiMatrix4x4>> pending = {{scene->mRootNode, scene->mRootNode->mTransformation}};
-  while (!pending.empty()) {
-    auto [node, transform] = pending.back();
-    pending.pop_back();
-    for (unsigned i = 0; i < node->mNumMeshes; ++i) {
-      if (node->mMeshes[i] >= scene->mNumMeshes) continue;
-      append(*scene->mMeshes[node->mMeshes[i]], transform, result, with_normals, with_uvs);
-      if (result.indices.size() / 3 > max_mesh_triangles)
-        return mesh_error(path, ExitStatus::invalid_input,
-                          "mesh has more than " + std::to_string(max_mesh_triangles) + " triangles");
-    }
-    for (unsigned i = 0; i < node->mNumChildren; ++i)
-      pending.emplace_back(node->mChildren[i], transform * node->mChildren[i]->mTransformation);
-  }
-  if (result.indices.empty()) return mesh_error(path, ExitStatus::invalid_input, "mesh file holds no triangles");
+  Result<TriangleMesh> read = read_in_mesh_reader(path);
+  if (!read) return read.error();
+  TriangleMesh& result = *read;
   for (const glm::vec3& p : result.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       return mesh_error(path, ExitStatus::invalid_input, "mesh has a NaN or infinite vertex coordinate");

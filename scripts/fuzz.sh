@@ -5,9 +5,8 @@
 #   starting from the gallery, fuzz/seeds (surface and volume graphs,
 #   functions, every global) and the corpus earlier runs left in
 #   build-fuzz/corpus;
-# - fuzz/file_fuzzer.cpp over the image files graphs pull in and the paths
-#   requests name (mesh files too with SHADETREE_FUZZ_MESHES=1, for long
-#   runs: Assimp is slow), for FILE_SECONDS (default half of SECONDS),
+# - fuzz/file_fuzzer.cpp over the image and mesh files graphs pull in and
+#   the paths requests name, for FILE_SECONDS (default half of SECONDS),
 #   from fuzz/file_seeds and build-fuzz/file_corpus.
 # A crash, a sanitizer report, a verifier failure or a JIT/interpreter
 # mismatch stops it with a non-zero status and leaves the input in
