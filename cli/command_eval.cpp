@@ -10,6 +10,7 @@
 #include "pipeline/compile_graph.h"
 #include "io/graph_files.h"
 #include "interp/interpreter.h"
+#include "render/graph_kinds.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
@@ -57,11 +58,11 @@ ExitStatus evaluate(const EvalArguments& arguments) {
   Result<TextureView> view_or_error = texture_view(*loaded->graph, arguments.size, arguments.frame);
   if (!view_or_error) return report(view_or_error.error());
   const TextureView& view = *view_or_error;
-  const TextureSample sample = texture_sample_at_point(view, at->data());
 
   auto kernel = make_interpreted_kernel(loaded->ir);
   SampleBuffers input(1, kernel->reads());
-  store_texture_sample(input, 0, sample);
+  const PointSample sample = graph_kind_driver(loaded->graph->kind)
+                                 .sample_at_point(*loaded->graph, {view.width, view.height}, at->data(), input);
   UniformInputs uniforms = texture_uniforms(view);
   for (const std::string& assignment : arguments.inputs) {
     Status applied = apply_input(assignment, input, uniforms);
@@ -98,11 +99,13 @@ void add_eval_command(CLI::App& app, CommandRunner& run) {
   auto* command = app.add_subcommand("eval", "print every output of a graph at one point, as JSON");
   auto arguments = std::make_shared<EvalArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
-  command->add_option("--at", arguments->at, "the point P as X,Y,Z")->required();
+  command->add_option("--at", arguments->at, "the point P as X,Y,Z (for an environment graph, the direction I)")
+      ->required();
   command->add_option("--input", arguments->inputs,
                       "set a global other than P: NAME=VALUE, e.g. N=0,1,0 or density=0.5 (repeatable; "
-                      "defaults: N = 0,0,1, uv and filter_width as render computes them, time = frame / 24, "
-                      "others 0)");
+                      "defaults: what the graph's driver gives a sample there (texture and others: N = 0,0,1, uv and "
+                      "filter_width as render computes them; environment: I, P and N from the direction), "
+                      "time = frame / 24, others 0)");
   command->add_option("--size", arguments->size,
                       "image size WIDTHxHEIGHT that sets filter_width as render would (default: the graph's)");
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");

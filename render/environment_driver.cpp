@@ -88,6 +88,12 @@ class EnvironmentFrames : public FrameRenderer {
   EnvironmentRenderOptions options_;
 };
 
+// Longitude and latitude of a unit direction, each over [0, 1].
+glm::vec2 longitude_latitude(const glm::vec3& direction) {
+  return {(std::atan2(direction.x, -direction.z) + pi) / (2.0f * pi),
+          std::asin(std::clamp(direction.y, -1.0f, 1.0f)) / pi + 0.5f};
+}
+
 }  // namespace
 
 void store_environment_sample(SampleBuffers& buffers, std::size_t i, const glm::vec3& direction, float filter_width) {
@@ -96,11 +102,19 @@ void store_environment_sample(SampleBuffers& buffers, std::size_t i, const glm::
       for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = direction[c];
   if (buffers.has(GlobalId::N))
     for (int c = 0; c < 3; ++c) buffers.plane(GlobalId::N, c)[i] = -direction[c];
-  if (buffers.has(GlobalId::uv)) {
-    buffers.plane(GlobalId::uv, 0)[i] = (std::atan2(direction.x, -direction.z) + pi) / (2.0f * pi);
-    buffers.plane(GlobalId::uv, 1)[i] = std::asin(std::clamp(direction.y, -1.0f, 1.0f)) / pi + 0.5f;
-  }
+  if (buffers.has(GlobalId::uv))
+    for (int c = 0; c < 2; ++c) buffers.plane(GlobalId::uv, c)[i] = longitude_latitude(direction)[c];
   if (buffers.has(GlobalId::filter_width)) buffers.plane(GlobalId::filter_width)[i] = filter_width;
+}
+
+PointSample environment_sample_at(const Graph&, std::pair<int, int> size, const float at[3], SampleBuffers& buffers) {
+  const glm::vec3 point(at[0], at[1], at[2]);
+  const float length = glm::length(point);
+  const glm::vec3 direction = length > 0.0f && std::isfinite(length) ? point / length : glm::vec3(0, 0, -1);
+  const float filter_width = pi / static_cast<float>(size.second);
+  store_environment_sample(buffers, 0, direction, filter_width);
+  const glm::vec2 uv = longitude_latitude(direction);
+  return {{direction.x, direction.y, direction.z}, {uv.x, uv.y}, filter_width};
 }
 
 glm::vec3 panorama_direction(float x, float y, int width, int height) {

@@ -29,6 +29,12 @@ namespace shadetree {
 // angle one pixel spans, in radians (the size of a pixel on the sphere).
 void store_environment_sample(SampleBuffers& buffers, std::size_t i, const glm::vec3& direction, float filter_width);
 
+// The kinds table's sample_at_point for environments: `at` is the
+// direction (normalized; zero looks down -z), the filter width a pixel of
+// the panorama of `size`.
+PointSample environment_sample_at(const Graph& graph, std::pair<int, int> size, const float at[3],
+                                  SampleBuffers& buffers);
+
 // The direction of panorama point (x, y), in pixels from the top-left
 // corner of a width x height image: longitude 0 looks down -z and grows
 // toward +x, latitude runs from +y (top row) to -y (bottom row).

@@ -12,12 +12,15 @@ namespace shadetree {
 namespace {
 
 constexpr GraphKindDriver drivers[] = {
-    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr},
+    // Surface and volume samples at a point are the texture's: P, uv over
+    // the render domain and the pixel's filter width, N = +z.
+    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr, texture_sample_at},
     {GraphKind::surface, option_samples_per_pixel | option_object | option_no_shadows, "rendering", "samples", true,
-     prepare_surface, nullptr},
+     prepare_surface, nullptr, texture_sample_at},
     {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume,
-     volume_thumbnail},
-    {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr},
+     volume_thumbnail, texture_sample_at},
+    {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr,
+     environment_sample_at},
 };
 static_assert(std::size(drivers) == graph_kind_count, "a driver for every kind of nodes/graph_kind.h");
 static_assert([] {

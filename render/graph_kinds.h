@@ -79,6 +79,13 @@ class FrameRenderer {
                                      const ProgressCallback& progress, FrameReport& report) const = 0;
 };
 
+// What `shadetree eval` shows of the sample a driver makes at a point.
+struct PointSample {
+  float P[3];
+  float uv[2];
+  float filter_width;
+};
+
 struct GraphKindDriver {
   GraphKind kind;
   unsigned options;  // the RenderOption bits it takes
@@ -90,6 +97,10 @@ struct GraphKindDriver {
   // the node's value as its colour; where that is not how to see it, this
   // rewrites that graph's document. Null: it renders as it is.
   void (*thumbnail_document)(const Graph& graph, json& document);
+  // The inputs its driver gives the sample at point `at` (a direction, for
+  // an environment) in an image of `size`, stored as sample 0 of `buffers`.
+  PointSample (*sample_at_point)(const Graph& graph, std::pair<int, int> size, const float at[3],
+                                 SampleBuffers& buffers);
 };
 
 const GraphKindDriver& graph_kind_driver(GraphKind kind);

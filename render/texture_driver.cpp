@@ -141,4 +141,12 @@ Result<std::unique_ptr<FrameRenderer>> prepare_texture(const Graph& graph, const
   return std::unique_ptr<FrameRenderer>(std::make_unique<TextureFrames>(view, request));
 }
 
+PointSample texture_sample_at(const Graph& graph, std::pair<int, int> size, const float at[3], SampleBuffers& buffers) {
+  TextureView view = TextureView::from_settings(graph.render);
+  std::tie(view.width, view.height) = size;
+  const TextureSample sample = texture_sample_at_point(view, at);
+  store_texture_sample(buffers, 0, sample);
+  return {{sample.P[0], sample.P[1], sample.P[2]}, {sample.uv[0], sample.uv[1]}, sample.filter_width};
+}
+
 }  // namespace shadetree

@@ -54,6 +54,10 @@ struct TextureRenderOptions {
 Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                              const TextureRenderOptions& options);
 
+// The kinds table's sample_at_point for textures: texture_sample_at_point
+// in the view of the graph's render section at `size`.
+PointSample texture_sample_at(const Graph& graph, std::pair<int, int> size, const float at[3], SampleBuffers& buffers);
+
 // The texture row of the kinds table (render/graph_kinds.h): the view of
 // the graph's render section at the requested size.
 Result<std::unique_ptr<FrameRenderer>> prepare_texture(const Graph& graph, const RenderRequest& request);

@@ -15,6 +15,7 @@
 #include "nodes/registry.h"
 #include "io/image_output.h"
 #include "io/vdb_file.h"
+#include "render/environment_driver.h"
 #include "render/texture_driver.h"
 
 namespace shadetree {
@@ -327,6 +328,28 @@ TEST_F(Cli, EvalAgreesWithTheRenderedPixel) {
     for (int c = 0; c < 3; ++c)
       EXPECT_EQ(result["outputs"]["color"][c].get<float>(), image->pixels[(row * 24 + column) * 3 + c])
           << "pixel " << column << "," << row << " channel " << c;
+  }
+}
+
+// For an environment, --at is the direction: eval there prints what the
+// panorama shows (to rounding: eval normalizes the direction again).
+TEST_F(Cli, EvalOfAnEnvironmentLooksInTheDirectionGiven) {
+  const std::string out = (directory_ / "sky.exr").string();
+  ASSERT_EQ(shadetree("render " + gallery + "sunset_sky.json -o " + out + " --size 32x16").status, 0);
+  Result<Image> image = read_image(out);
+  ASSERT_TRUE(image.ok());
+  for (auto [column, row] : {std::pair{3, 2}, std::pair{20, 7}, std::pair{31, 12}}) {
+    const glm::vec3 direction = panorama_direction(column + 0.5f, row + 0.5f, 32, 16);
+    std::ostringstream at;
+    at.precision(9);
+    at << direction.x << "," << direction.y << "," << direction.z;
+    const CommandResult run = shadetree("eval " + gallery + "sunset_sky.json --size 32x16 --at " + at.str());
+    ASSERT_EQ(run.status, 0) << run.err;
+    const auto result = nlohmann::json::parse(run.out);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(result["outputs"]["color"][c].get<float>(), image->pixels[(row * 32 + column) * 3 + c], 1e-4f)
+          << "pixel " << column << "," << row << " channel " << c;
+    EXPECT_NEAR(result["filter_width"].get<float>(), 3.14159265f / 16.0f, 1e-6f);
   }
 }
 
