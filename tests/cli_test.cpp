@@ -17,6 +17,7 @@
 #include "io/vdb_file.h"
 #include "render/environment_driver.h"
 #include "render/texture_driver.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -38,14 +39,6 @@ std::string read_text(const fs::path& path) {
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("shadetree-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   CommandResult shadetree(const std::string& arguments) const {
     const fs::path err = directory_ / "stderr.txt";
     const std::string command = std::string(SHADETREE_BINARY) + " " + arguments + " 2>" + err.string();
@@ -70,7 +63,8 @@ class Cli : public ::testing::Test {
     return names;
   }
 
-  fs::path directory_;
+  testing::TempFolder folder_{"shadetree-cli"};
+  const fs::path& directory_ = folder_.path();
 };
 
 const std::string gallery = SHADETREE_SOURCE_DIR "/graphs/";

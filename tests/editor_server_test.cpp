@@ -24,6 +24,7 @@
 #include "nodes/registry.h"
 #include "pipeline/compile_graph.h"
 #include "server/editor_server.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -51,11 +52,6 @@ int connect_to_loopback(int port) {
 class EditorServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    // One folder per test and process: ctest runs tests side by side.
-    root_ = fs::temp_directory_path() /
-            ("shadetree-editor-server-test-" + std::to_string(::getpid()) + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
     fs::create_directories(root_ / "graphs" / "more");
     fs::create_directories(root_ / "editor");
     std::ofstream(root_ / "graphs" / "waves.json") << sines_graph;
@@ -79,7 +75,6 @@ class EditorServerTest : public ::testing::Test {
   void TearDown() override {
     client_.reset();
     server_.reset();
-    fs::remove_all(root_);
   }
 
   // Polls /api/stats until no compile runs in the background.
@@ -101,7 +96,8 @@ class EditorServerTest : public ::testing::Test {
     return error;
   }
 
-  fs::path root_;
+  testing::TempFolder temp_{"shadetree-editor-server-test"};  // outlives the server
+  const fs::path& root_ = temp_.path();
   ServeOptions options_;
   std::unique_ptr<EditorServer> server_;
   std::unique_ptr<httplib::Client> client_;

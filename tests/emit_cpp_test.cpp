@@ -22,6 +22,7 @@
 #include "support/graph_text.h"
 #include "support/random_graph.h"
 #include "support/test_files.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -125,15 +126,6 @@ bool close_enough(float emitted, float reference) {
 
 class EmitCpp : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // A folder of each test's own: ctest runs them in parallel.
-    directory_ = fs::temp_directory_path() /
-                 ("shadetree-emit-cpp-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   void emit(const std::string& name, Result<LoadedGraph> loaded) {
     ASSERT_TRUE(loaded.ok()) << name << ": " << loaded.error().to_string();
     Result<std::string> source = emit_cpp(*loaded->graph, loaded->ir, loaded->params, name);
@@ -170,7 +162,8 @@ class EmitCpp : public ::testing::Test {
     }
   }
 
-  fs::path directory_;
+  testing::TempFolder folder_{"shadetree-emit-cpp"};
+  const fs::path& directory_ = folder_.path();
   std::vector<Emitted> kernels_;
 };
 

@@ -18,6 +18,7 @@
 #include "io/image_output.h"
 #include "support/graph_text.h"
 #include "support/test_files.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -127,14 +128,11 @@ TEST(ImageOp, BadAttributesAreOneLineErrorsOnTheNode) {
 // Image files on disk, through OpenImageIO.
 class ImageFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() / ("shadetree-image-" + std::to_string(::getpid()));
-    fs::create_directories(folder_ / "graphs");
-  }
-  void TearDown() override { fs::remove_all(folder_); }
+  void SetUp() override { fs::create_directories(folder_ / "graphs"); }
 
   std::string graph_file() const { return (folder_ / "graphs" / "g.json").string(); }
-  fs::path folder_;
+  testing::TempFolder temp_{"shadetree-image"};
+  const fs::path& folder_ = temp_.path();
 };
 
 // EXR keeps 32-bit floats, so the pixels read back exactly.

@@ -14,6 +14,7 @@
 #include "scene/preview_scene.h"
 #include "io/vdb_file.h"
 #include "support/cube_mesh.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -22,19 +23,10 @@ namespace fs = std::filesystem;
 
 class MeshFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() / ("shadetree-mesh-" + std::to_string(::getpid()));
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
+  std::string write(const std::string& name, const std::string& text) const { return temp_.write(name, text); }
 
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path path = folder_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-
-  fs::path folder_;
+  testing::TempFolder temp_{"shadetree-mesh"};
+  const fs::path& folder_ = temp_.path();
 };
 
 

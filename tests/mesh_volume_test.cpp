@@ -16,6 +16,7 @@
 #include "support/cube_mesh.h"
 #include "support/graph_text.h"
 #include "support/test_files.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -25,13 +26,9 @@ namespace fs = std::filesystem;
 
 class MeshVolume : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() / ("shadetree-mesh-volume-" + std::to_string(::getpid()));
-    fs::create_directories(folder_);
-    std::ofstream(folder_ / "cube.obj") << testing::cube_obj(0.5f);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-  fs::path folder_;
+  void SetUp() override { std::ofstream(folder_ / "cube.obj") << testing::cube_obj(0.5f); }
+  testing::TempFolder temp_{"shadetree-mesh-volume"};
+  const fs::path& folder_ = temp_.path();
 };
 
 float grid_value_at(const DistanceGrid& grid, const std::array<float, 3>& point) {
