@@ -37,6 +37,7 @@ const state = {
   previews: 0,          // previews drawn
   lastError: null,      // the checker's diagnostic of the current document, or null
   sequence: 0,          // of the latest update; older previews are dropped
+  opened: 0,            // files opened: a preview of an earlier one is never drawn
   frame: 0,             // sent with previews of graphs that use frame or time
   playing: false,
   lastInteraction: -Infinity,
@@ -328,6 +329,7 @@ async function update() {
 async function requestPreview(body, side, key) {
   inflight?.controller.abort();
   const id = ++previewRequests;
+  const opened = state.opened;
   const controller = new AbortController();
   let finished;
   inflight = { controller, started: performance.now(), done: new Promise((resolve) => { finished = resolve; }) };
@@ -342,7 +344,7 @@ async function requestPreview(body, side, key) {
       return false;
     }
     const image = await imageOf(response);
-    if (id < previewDrawn) return false;
+    if (id < previewDrawn || opened !== state.opened) return false;
     previewDrawn = id;
     state.drawnKey = key;
     state.drawnSide = side;
@@ -474,15 +476,40 @@ function nextFrame() {
 
 // --- files ---
 
-async function open(path) {
-  const response = await api("GET", `/api/graph?path=${encodeURIComponent(path)}`);
-  if (!response.ok) {
-    setStatus(await errorOf(response), true);
-    return;
+// Selects `path` in the list of graphs, adding it (in order) if the file
+// is newer than the list.
+function selectInGraphList(path) {
+  const list = byId("graph-list");
+  if (![...list.options].some((option) => option.value === path)) {
+    const later = [...list.options].find((option) => option.value.localeCompare(path) > 0);
+    list.insertBefore(new Option(path, path), later || null);
   }
+  list.value = path;
+}
+
+// The document changes only once the file has parsed: a file that is not a
+// graph's JSON leaves the open one open, and Save cannot write over it.
+async function open(path) {
+  const keepOpen = (message) => {
+    setStatus(message, true);
+    byId("graph-list").value = state.path ?? "";
+  };
+  const response = await api("GET", `/api/graph?path=${encodeURIComponent(path)}`);
+  if (!response.ok) return keepOpen(await errorOf(response));
+  let doc;
+  try {
+    doc = JSON.parse(await response.text());
+  } catch (error) {
+    return keepOpen(`${path} is not a graph file (${error.message}); ${state.path ?? "nothing"} stays open`);
+  }
+  if (!doc || typeof doc !== "object" || Array.isArray(doc) || !Array.isArray(doc.nodes))
+    return keepOpen(`${path} is not a graph file (no "nodes" array); ${state.path ?? "nothing"} stays open`);
   setPlaying(false);
+  state.opened += 1;
+  inflight?.controller.abort();
+  previewCanvas.getContext("2d").clearRect(0, 0, previewCanvas.width, previewCanvas.height);
   state.path = path;
-  state.doc = await response.json();
+  state.doc = doc;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
@@ -497,7 +524,7 @@ async function open(path) {
   const size = state.doc.render?.size || [512, 512];
   byId("export-width").value = size[0];
   byId("export-height").value = size[1];
-  byId("graph-list").value = path;
+  selectInGraphList(path);
   showScopes();
   graphView.show({ fit: true });
   paramsPanel.show();
@@ -536,12 +563,7 @@ async function saveAs(name) {
   if (path === ".json") return false;
   if (!(await write(path, true))) return false;
   state.path = path;
-  const list = byId("graph-list");
-  if (![...list.options].some((option) => option.value === path)) {
-    const later = [...list.options].find((option) => option.value.localeCompare(path) > 0);
-    list.insertBefore(new Option(path, path), later || null);
-  }
-  list.value = path;
+  selectInGraphList(path);
   scheduleUpdate();
   return true;
 }
@@ -635,6 +657,13 @@ async function start() {
   byId("frame").addEventListener("change", (event) => setFrame(Number(event.target.value), false));
   byId("play").addEventListener("click", () => setPlaying(!state.playing));
   document.addEventListener("keydown", onKey, true);
+  // Closing or reloading the page asks first when edits are unsaved.
+  window.addEventListener("beforeunload", (event) => {
+    history.flush();
+    if (!unsaved()) return;
+    event.preventDefault();
+    event.returnValue = "";
+  });
   canvas.onNodeSelected = showNodePanel;
   canvas.onNodeDblClicked = (v) => state.doc.functions?.[v.op] && showScope(v.op);
   canvas.onNodeDeselected = () => {

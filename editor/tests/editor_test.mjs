@@ -13,7 +13,9 @@
 // param in use refused; and the curve the curve editor draws agrees with
 // the server's spline, Catmull-Rom and linear; a volume opens as a draft
 // refined to the full size, and its slider drag draws drafts, refined on
-// a pause.
+// a pause; a graph opened during a preview never shows the earlier
+// graph's picture; a malformed file is refused on open and Save cannot
+// write over it; leaving the page with unsaved edits asks first.
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
 import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -357,6 +359,42 @@ try {
   assert.match(await page.evaluate(() => document.getElementById("preview-info").textContent), /refining/);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
   console.log(`fireball.json: a slider drag drew a ${draftSide}x${draftSide} draft, refined to 256x256 on the pause`);
+
+  // Opening a graph with a check error while the fireball's preview is on
+  // its way: the fireball's picture is never drawn under the new name.
+  const typeError = JSON.parse(readFileSync(join(source, "graphs", "marble.json"), "utf8"));
+  typeError.outputs.color = "no_such_node";
+  writeFileSync(join(folder, "type_error.json"), JSON.stringify(typeError, null, 2));
+  await dragSlider("scale", 3);
+  await page.evaluate(() => window.shadetreeEditor.open("type_error.json"));
+  await new Promise((resolve) => setTimeout(resolve, 1500));
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "type_error.json");
+  assert.ok(await page.evaluate(() => document.getElementById("status").classList.contains("error")), "the check error shows");
+  assert.equal(await previewPixels(), 0, "no earlier graph's picture in the preview");
+  console.log("opened type_error.json during a fireball preview: its error shows, the fireball's picture does not");
+
+  // A malformed file never becomes the document: Save still writes the
+  // graph that is open, and the broken file keeps its bytes.
+  writeFileSync(join(folder, "broken.json"), "{\"format\": ");
+  await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.previews > 0 && window.shadetreeEditor.state.path === "fireball.json");
+  await page.evaluate(() => window.shadetreeEditor.open("broken.json"));
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "fireball.json", "the open graph stays open");
+  assert.match(await page.evaluate(() => document.getElementById("status").textContent), /broken\.json is not a graph file/);
+  assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "fireball.json");
+  await dragSlider("scale", 2);
+  await settled();
+  const leaving = await page.evaluate(() => {
+    const event = new Event("beforeunload", { cancelable: true });
+    window.dispatchEvent(event);
+    return event.defaultPrevented;
+  });
+  assert.ok(leaving, "leaving the page with unsaved edits asks first");
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.save()), true);
+  assert.equal(readFileSync(join(folder, "broken.json"), "utf8"), "{\"format\": ", "the broken file is untouched");
+  const fireball = spawnSync(binary, ["check", join(folder, "fireball.json")], { encoding: "utf8" });
+  assert.equal(fireball.status, 0, fireball.stderr);
+  console.log("broken.json refused on open: fireball.json stays open, unsaved edits guard the page, Save writes fireball.json");
 
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
