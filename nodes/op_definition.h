@@ -27,6 +27,13 @@ inline AttributeSpec seed_attribute() {
   return {"seed", AttributeKind::integer, false, {}, "permutation and gradient tables seed (default 1989)"};
 }
 
+// The period of the periodic noise ops (OSL's pnoise): per axis, in cells
+// of the lattice, rounded to a whole number from 1 to 256; a texture over
+// a domain of one period tiles exactly.
+inline PortSpec period_input() {
+  return in("period", Type::vec3, 4.0f, "repeats every this many units of p, per axis (whole, 1 to 256)");
+}
+
 // T -> T, applied to each component.
 inline OpDef unary(std::string name, std::string doc) {
   return {.name = std::move(name), .family = OpFamily::arithmetic, .doc = std::move(doc),

@@ -17,6 +17,7 @@ namespace shadetree {
   /* generators (nodes/ops/generators.h) */                                   \
   X(noise) X(dnoise) X(vnoise) X(noise_improved) X(turbulence) X(fbm)        \
   X(sines) X(swave) X(julia) X(checker) X(cellular)                          \
+  X(pnoise) X(pturbulence) X(pfbm) X(pcellular)                              \
   /* arithmetic (nodes/ops/arithmetic.h) */                                   \
   X(add) X(sub) X(mul) X(div) X(neg) X(min) X(max) X(clamp) X(abs) X(floor)  \
   X(fract) X(mod) X(pow) X(sqrt) X(exp) X(log) X(sin) X(cos) X(mix) X(step)  \

@@ -95,6 +95,53 @@ struct fbm {
   }
 };
 
+struct pnoise {
+  static OpDef definition() {
+    return {.name = "pnoise", .family = OpFamily::generator,
+            .doc = "noise repeating every period along each axis, for tileable textures (OSL pnoise)",
+            .inputs = {in("p", Type::vec3), period_input()}, .outputs = {out(Type::float_)},
+            .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pnoise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2));
+  }
+};
+
+struct pturbulence {
+  static OpDef definition() {
+    return {.name = "pturbulence", .family = OpFamily::generator,
+            .doc = "turbulence repeating every period: octave i is pnoise(2^i p) with period 2^i period",
+            .inputs = {in("p", Type::vec3), period_input(),
+                       in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pturbulence(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2),
+                               x.in(2), x.in(3));
+  }
+};
+
+struct pfbm {
+  static OpDef definition() {
+    return {.name = "pfbm", .family = OpFamily::generator,
+            .doc = "fbm repeating every period; the lacunarity is rounded to a whole number, at least 2",
+            .inputs = {in("p", Type::vec3), period_input(),
+                       in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("lacunarity", Type::float_, 2.0f, "frequency ratio between octaves (whole)"),
+                       in("gain", Type::float_, 0.5f, "amplitude ratio between octaves"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pfbm(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2), x.in(2),
+                        x.in(3), x.in(4), x.in(5));
+  }
+};
+
 struct sines {
   static OpDef definition() {
     return {.name = "sines", .family = OpFamily::generator,
@@ -165,6 +212,23 @@ struct cellular {
   template <class X>
   static void evaluate(const X& x) {
     const auto distances = sem::cellular(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1));
+    x.out(0) = distances.nearest;
+    x.out(1) = distances.second;
+  }
+};
+
+struct pcellular {
+  static OpDef definition() {
+    return {.name = "pcellular", .family = OpFamily::generator,
+            .doc = "cellular noise repeating every period: the feature points of cell c are those of c mod period",
+            .inputs = {in("p", Type::vec3), period_input(),
+                       in("jitter", Type::float_, 1.0f, "0: points at cell centres, 1: anywhere in their cell")},
+            .outputs = {out(Type::vec2)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    const auto distances =
+        sem::pcellular(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2), x.in(2));
     x.out(0) = distances.nearest;
     x.out(1) = distances.second;
   }

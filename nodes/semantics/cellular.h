@@ -24,18 +24,19 @@ struct CellularDistances {
 // cell, so the 27 cells around p hold the nearest point; F2 is exact
 // unless the second-nearest point lies further out, which the 27 cells
 // make rare. jitter 0 puts every point at its cell's centre.
-template <class F>
-CellularDistances<F> cellular(const NoiseTables& tables, F x, F y, F z, F jitter) {
-  auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
-  const F fx = x - lx.cell, fy = y - ly.cell, fz = z - lz.cell;
+// The axes say how cells hash (noise.h): as they are, or wrapped by a period.
+template <class F, class Axis>
+CellularDistances<F> cellular_on_axes(const NoiseTables& tables, F x, F y, F z, F jitter, const Axis& ax,
+                                      const Axis& ay, const Axis& az) {
+  const F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
   jitter = min(max(jitter, splat<F>(0.0f)), splat<F>(1.0f));
   F nearest = splat<F>(1e30f), second = splat<F>(1e30f);
   for (int dk = -1; dk <= 1; ++dk) {
-    auto hash_k = noise_phi(tables, lz.hash_index + dk);
+    auto hash_k = noise_phi(tables, az.index(dk));
     for (int dj = -1; dj <= 1; ++dj) {
-      auto hash_jk = noise_phi(tables, ly.hash_index + dj + hash_k);
+      auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
       for (int di = -1; di <= 1; ++di) {
-        auto hash_x = noise_phi(tables, lx.hash_index + di + hash_jk);
+        auto hash_x = noise_phi(tables, ax.index(di) + hash_jk);
         auto hash_y = noise_phi(tables, hash_x + 1);
         auto hash_z = noise_phi(tables, hash_y + 1);
         auto offset = [&](auto hash, int cell, F along) {
@@ -49,6 +50,19 @@ CellularDistances<F> cellular(const NoiseTables& tables, F x, F y, F z, F jitter
     }
   }
   return {sqrt(nearest), sqrt(second)};
+}
+
+template <class F>
+CellularDistances<F> cellular(const NoiseTables& tables, F x, F y, F z, F jitter) {
+  return cellular_on_axes(tables, x, y, z, jitter, lattice_axis(x), lattice_axis(y), lattice_axis(z));
+}
+
+// Cellular noise repeating every period (whole cells, per axis): the
+// feature point of cell c is that of cell c mod period.
+template <class F>
+CellularDistances<F> pcellular(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz, F jitter) {
+  return cellular_on_axes(tables, x, y, z, jitter, periodic_axis(x, noise_period(px)),
+                          periodic_axis(y, noise_period(py)), periodic_axis(z, noise_period(pz)));
 }
 
 }  // namespace shadetree::semantics

@@ -49,22 +49,69 @@ LatticeCoordinate<F> lattice_coordinate(F x) {
   return {cell, to_int(wrapped)};
 }
 
+// One axis of the lattice: a coordinate's cell, and the hash index of the
+// cell d cells on (phi and the slot reduce it mod n).
+template <class F>
+struct LatticeAxis {
+  LatticeCoordinate<F> at;
+  F corner() const { return at.cell; }
+  IntOf<F> index(int d) const { return at.hash_index + d; }
+};
+
+// Periods of the periodic ops: rounded to a whole number of cells, from 1
+// to max_noise_period, so that cell c and cell c + period hash alike.
+inline constexpr float max_noise_period = 256.0f;
+
+template <class F>
+F noise_period(F period) {
+  return min(max(floor(period + 0.5f), splat<F>(1.0f)), splat<F>(max_noise_period));
+}
+
+// An axis of a lattice that repeats every `period` cells (OSL's pnoise):
+// cell c hashes as c mod period, reduced in float (exact for cells below
+// 2^24, which covers 16 octaves of the largest period), then mod n.
+template <class F>
+struct PeriodicAxis {
+  F cell;    // floor(x)
+  F period;  // whole, >= 1
+  F corner() const { return cell; }
+  IntOf<F> index(int d) const {
+    F c = cell + float(d);
+    F wrapped = c - floor(c / period) * period;
+    wrapped = select(wrapped < 0.0f, wrapped + period, wrapped);
+    wrapped = select(wrapped >= period, wrapped - period, wrapped);
+    wrapped = select(both(wrapped >= 0.0f, wrapped < period), wrapped, splat<F>(0.0f));  // NaN, infinities
+    return to_int(wrapped - floor(wrapped * (1.0f / noise_table_size)) * float(noise_table_size));
+  }
+};
+
+template <class F>
+LatticeAxis<F> lattice_axis(F x) {
+  return {lattice_coordinate(x)};
+}
+
+template <class F>
+PeriodicAxis<F> periodic_axis(F x, F period) {
+  return {floor(x), period};
+}
+
 // Visits the 2^3 knots around p (1989 section 2.3), giving each one's
 // hashed-gradient slot (i + phi(j + phi(k))) mod n, so that its gradient
 // G[phi(i + phi(j + phi(k)))] is hashed_gradient[slot], and its offset
-// (u, v, w) = p - (i, j, k).
-template <class F, class Visit>
-void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) {
-  auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
-  F fx = x - lx.cell, fy = y - ly.cell, fz = z - lz.cell;
+// (u, v, w) = p - (i, j, k). The axes say how cells hash: as they are, or
+// wrapped by a period.
+template <class F, class Axis, class Visit>
+void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
+                         Visit visit) {
+  F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
   for (int dk = 0; dk < 2; ++dk) {
-    auto hash_k = noise_phi(tables, lz.hash_index + dk);
+    auto hash_k = noise_phi(tables, az.index(dk));
     F w = fz - float(dk);
     for (int dj = 0; dj < 2; ++dj) {
-      auto hash_jk = noise_phi(tables, ly.hash_index + dj + hash_k);
+      auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
       F v = fy - float(dj);
       for (int di = 0; di < 2; ++di) {
-        auto slot = (lx.hash_index + di + hash_jk) & (noise_table_size - 1);
+        auto slot = (ax.index(di) + hash_jk) & (noise_table_size - 1);
         F u = fx - float(di);
         visit(slot, u, v, w);
       }
@@ -72,17 +119,35 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) 
   }
 }
 
-// noise(x,y,z) = sum over the 8 knots of w(u) w(v) w(w) (G . (u,v,w)).
-template <class F>
-F noise(const NoiseTables& tables, F x, F y, F z) {
+template <class F, class Visit>
+void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) {
+  for_each_noise_knot(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z), visit);
+}
+
+// sum over the 8 knots of w(u) w(v) w(w) (G . (u,v,w)), on the given axes.
+template <class F, class Axis>
+F noise_on_axes(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az) {
   F sum = splat<F>(0.0f);
-  for_each_noise_knot(tables, x, y, z, [&](auto slot, F u, F v, F w) {
+  for_each_noise_knot(tables, x, y, z, ax, ay, az, [&](auto slot, F u, F v, F w) {
     F slope = gather256(tables.hashed_gradient_x.data(), slot) * u +
               gather256(tables.hashed_gradient_y.data(), slot) * v +
               gather256(tables.hashed_gradient_z.data(), slot) * w;
     sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
   });
   return sum;
+}
+
+template <class F>
+F noise(const NoiseTables& tables, F x, F y, F z) {
+  return noise_on_axes(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z));
+}
+
+// noise, repeating every period (whole cells, per axis): pnoise(p + period
+// e_i) = pnoise(p) exactly where p + period e_i is exact.
+template <class F>
+F pnoise(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz) {
+  return noise_on_axes(tables, x, y, z, periodic_axis(x, noise_period(px)), periodic_axis(y, noise_period(py)),
+                       periodic_axis(z, noise_period(pz)));
 }
 
 // The analytic gradient of noise (Perlin 1985 Dnoise): product rule on
@@ -164,26 +229,44 @@ F noise_improved(F x, F y, F z) {
 // Octave i (scale 2^-i) takes part while i < octaves and, as in the loop
 // "while (scale > pixelsize)" of the 1985 appendix, scale > filter_width.
 // The trip count differs per lane, so lanes drop out through a mask.
-template <class F>
-F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width) {
+// `noise_at(frequency)` is the octave's noise of p * frequency.
+template <class F, class NoiseAt>
+F turbulence_of(F octaves, F filter_width, NoiseAt noise_at) {
   F sum = splat<F>(0.0f);
   float scale = 1.0f;
   for (int octave = 0; octave < max_octaves; ++octave, scale *= 0.5f) {
     auto active = both(splat<F>(float(octave)) < octaves, splat<F>(scale) > filter_width);
     if (!any(active)) break;
-    float frequency = 1.0f / scale;  // a power of two: p * frequency is exact
-    F n = noise(tables, x * frequency, y * frequency, z * frequency);
+    F n = noise_at(1.0f / scale);  // a power of two: p * frequency is exact
     sum = sum + select(active, abs(n) * scale, splat<F>(0.0f));
   }
   return sum;
+}
+
+template <class F>
+F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width) {
+  return turbulence_of(octaves, filter_width,
+                       [&](float f) { return noise(tables, x * f, y * f, z * f); });
+}
+
+// Turbulence repeating every period: octave i is pnoise of 2^i p with
+// period 2^i period, so every octave repeats where the first does.
+template <class F>
+F pturbulence(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz, F octaves, F filter_width) {
+  const F period_x = noise_period(px), period_y = noise_period(py), period_z = noise_period(pz);
+  return turbulence_of(octaves, filter_width, [&](float f) {
+    return noise_on_axes(tables, x * f, y * f, z * f, periodic_axis(x * f, period_x * f),
+                         periodic_axis(y * f, period_y * f), periodic_axis(z * f, period_z * f));
+  });
 }
 
 // Fractional Brownian motion: octave i has frequency lacunarity^i and
 // amplitude gain^i; octaves take part until the first one whose period
 // 1 / frequency is not above filter_width (a lane never resumes: with a
 // lacunarity below 1 the frequency could fall again).
-template <class F>
-F fbm(const NoiseTables& tables, F x, F y, F z, F octaves, F lacunarity, F gain, F filter_width) {
+// `noise_at(frequency)` is the octave's noise of p * frequency.
+template <class F, class NoiseAt>
+F fbm_of(F octaves, F lacunarity, F gain, F filter_width, NoiseAt noise_at) {
   F sum = splat<F>(0.0f);
   F frequency = splat<F>(1.0f);
   F amplitude = splat<F>(1.0f);
@@ -191,12 +274,32 @@ F fbm(const NoiseTables& tables, F x, F y, F z, F octaves, F lacunarity, F gain,
   for (int octave = 0; octave < max_octaves; ++octave) {
     active = both(active, both(splat<F>(float(octave)) < octaves, frequency * filter_width < 1.0f));
     if (!any(active)) break;
-    F n = noise(tables, x * frequency, y * frequency, z * frequency);
+    F n = noise_at(frequency);
     sum = sum + select(active, n * amplitude, splat<F>(0.0f));
     frequency = frequency * lacunarity;
     amplitude = amplitude * gain;
   }
   return sum;
+}
+
+template <class F>
+F fbm(const NoiseTables& tables, F x, F y, F z, F octaves, F lacunarity, F gain, F filter_width) {
+  return fbm_of(octaves, lacunarity, gain, filter_width,
+                [&](F f) { return noise(tables, x * f, y * f, z * f); });
+}
+
+// fbm repeating every period. The lacunarity is rounded to a whole number
+// (at least 2), so that octave i, pnoise of lacunarity^i p with period
+// lacunarity^i period, repeats where the first octave does.
+template <class F>
+F pfbm(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz, F octaves, F lacunarity, F gain,
+       F filter_width) {
+  const F period_x = noise_period(px), period_y = noise_period(py), period_z = noise_period(pz);
+  const F whole = max(floor(lacunarity + 0.5f), splat<F>(2.0f));
+  return fbm_of(octaves, whole, gain, filter_width, [&](F f) {
+    return noise_on_axes(tables, x * f, y * f, z * f, periodic_axis(x * f, period_x * f),
+                         periodic_axis(y * f, period_y * f), periodic_axis(z * f, period_z * f));
+  });
 }
 
 }  // namespace shadetree::semantics
