@@ -37,8 +37,8 @@ Diagnostic mesh_error(const std::string& path, ExitStatus status, std::string me
 }
 
 // Why Assimp must not be given an OBJ or PLY file, judged from its text:
-// more triangles or vertices than the limits (Assimp takes about 700 bytes
-// a triangle while loading), a PLY element count larger than the file
+// more triangles, vertices or OBJ parts than the limits (Assimp takes about
+// 700 bytes a triangle while loading), a PLY element count larger than the file
 // could hold (999999999 vertices in a 100-byte file took gigabytes), or a
 // PLY header without its end (on which Assimp never returned). Empty if
 // none; other formats only the file size bounds.
@@ -69,7 +69,10 @@ std::string mesh_text_problem(const std::string& path, std::uintmax_t bytes) {
   }
   if (std::filesystem::path(path).extension() != ".obj") return {};
   std::size_t triangles = 0, vertices = 0;
+  std::size_t parts = 0;
   do {
+    if ((line.rfind("o ", 0) == 0 || line.rfind("usemtl", 0) == 0) && ++parts > max_obj_parts)
+      return "OBJ file has more than " + std::to_string(max_obj_parts) + " objects and material switches";
     if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t')) continue;
     if (line[0] == 'v' && ++vertices > max_mesh_vertices) return too_many_vertices;
     if (line[0] != 'f') continue;
