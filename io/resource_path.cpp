@@ -45,6 +45,12 @@ Result<std::string> resolve_graph_resource(const std::string& graph_file, const 
   if (!allowed)
     return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {},
                       what + " \"" + path + "\" lies outside the graph's folder (allow its folder with --search-path)"};
+  // A pipe or a device would block the reader, or never end: only files
+  // (a missing one is left to the reader to name).
+  const fs::file_status status = fs::status(resolved, error);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    return Diagnostic{ExitStatus::invalid_input, graph_file, {}, {},
+                      what + " \"" + path + "\" is not a regular file"};
   return resolved.string();
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "io/resource_path.h"
@@ -71,6 +72,21 @@ TEST_F(ResourcePath, SearchPathsAllowOtherFolders) {
 TEST_F(ResourcePath, SymbolicLinksAreFollowedBeforeTheCheck) {
   fs::create_symlink(root_ / "elsewhere" / "b.obj", root_ / "graphs" / "link.obj");
   EXPECT_FALSE(resolve_graph_resource(graph(), "link.obj", {}, "file").ok());
+}
+
+// Found in this session's hostile pass: a scene environment naming a pipe
+// in the graph's folder made check wait forever on it. Only regular files
+// (or missing ones, which their readers name) resolve.
+TEST_F(ResourcePath, PipesAndFoldersAreNotFiles) {
+  ASSERT_EQ(::mkfifo((root_ / "graphs" / "pipe.json").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", root_ / "graphs" / "zero.obj");
+  for (const char* name : {"pipe.json", "meshes", "zero.obj"}) {
+    Result<std::string> path = resolve_graph_resource(graph(), name, {"/dev"}, "scene environment");
+    ASSERT_FALSE(path.ok()) << name;
+    EXPECT_EQ(path.error().to_string(), "error: " + graph() + ": scene environment \"" + name +
+                                            "\" is not a regular file");
+  }
+  EXPECT_TRUE(resolve_graph_resource(graph(), "not_there_yet.json", {}, "scene environment").ok());
 }
 
 }  // namespace
