@@ -8,7 +8,7 @@ namespace {
 
 template <class T>
 void append_array(std::string& record, const std::vector<T>& values) {
-  record.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+  if (!values.empty()) record.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
 class RecordReader {
@@ -17,6 +17,7 @@ class RecordReader {
 
   bool take(void* out, std::size_t bytes) {
     if (record_.size() - offset_ < bytes) return false;
+    if (bytes == 0) return true;  // `out` may be an empty vector's null data
     std::memcpy(out, record_.data() + offset_, bytes);
     offset_ += bytes;
     return true;
