@@ -102,8 +102,10 @@ void store_environment_sample(SampleBuffers& buffers, std::size_t i, const glm::
       for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = direction[c];
   if (buffers.has(GlobalId::N))
     for (int c = 0; c < 3; ++c) buffers.plane(GlobalId::N, c)[i] = -direction[c];
-  if (buffers.has(GlobalId::uv))
-    for (int c = 0; c < 2; ++c) buffers.plane(GlobalId::uv, c)[i] = longitude_latitude(direction)[c];
+  if (buffers.has(GlobalId::uv)) {
+    const glm::vec2 uv = longitude_latitude(direction);
+    for (int c = 0; c < 2; ++c) buffers.plane(GlobalId::uv, c)[i] = uv[c];
+  }
   if (buffers.has(GlobalId::filter_width)) buffers.plane(GlobalId::filter_width)[i] = filter_width;
 }
 
@@ -144,7 +146,6 @@ Result<std::shared_ptr<const EnvironmentBackground>> EnvironmentBackground::load
   auto background = std::make_shared<EnvironmentBackground>();
   Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(loaded->ir);
   if (!kernel) return kernel.error();
-  background->graph_ = loaded->graph;
   background->params_ = std::move(loaded->params);
   background->kernel_ = std::move(*kernel);
   return std::shared_ptr<const EnvironmentBackground>(std::move(background));
@@ -164,6 +165,15 @@ Result<Image> EnvironmentBackground::seen_by(const Camera& camera, int width, in
     const glm::vec3 neighbour = glm::normalize(camera.ray(x + 1.5f, y + 0.5f).direction);
     return DirectionSample{direction, glm::length(neighbour - direction)};
   });
+}
+
+Result<std::optional<Image>> environment_seen_by(const EnvironmentBackground* environment, const Camera& camera,
+                                                 int width, int height, float frame,
+                                                 const EnvironmentRenderOptions& options) {
+  if (!environment) return std::optional<Image>();
+  Result<Image> seen = environment->seen_by(camera, width, height, frame, options);
+  if (!seen) return seen.error();
+  return std::optional<Image>(std::move(*seen));
 }
 
 Result<std::unique_ptr<FrameRenderer>> prepare_environment(const Graph& graph, const RenderRequest& request) {

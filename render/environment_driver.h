@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,10 +70,16 @@ class EnvironmentBackground {
                         const EnvironmentRenderOptions& options) const;
 
  private:
-  std::shared_ptr<const Graph> graph_;
   std::vector<float> params_;
   std::unique_ptr<Kernel> kernel_;
 };
+
+// What `camera` sees of `environment` at `frame` (width x height, RGB), or
+// nothing where the scene names no environment (null): the per-pixel
+// background of the surface and volume drivers.
+Result<std::optional<Image>> environment_seen_by(const EnvironmentBackground* environment, const Camera& camera,
+                                                 int width, int height, float frame,
+                                                 const EnvironmentRenderOptions& options);
 
 // The environment row of the kinds table (render/graph_kinds.h): the
 // panorama at the requested size.

@@ -36,7 +36,7 @@ constexpr std::pair<RenderOption, const char*> option_names[] = {{option_samples
                                                                  {option_jitter, "--jitter"}};
 
 // "surface or volume": the kinds whose drivers take `option`.
-std::string kinds_taking(RenderOption option) {
+std::string kinds_with_option(RenderOption option) {
   KindSet kinds;
   for (const GraphKindDriver& driver : drivers)
     if (driver.options & option) kinds = kinds | kinds_of(driver.kind);
@@ -76,7 +76,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_render(const Graph& graph, const 
   for (const auto& [option, name] : option_names)
     if ((request.options() & option) && !(driver.options & option))
       return Diagnostic{ExitStatus::invalid_input, graph.file, {}, {},
-                        std::string(name) + " is for " + kinds_taking(option) + " graphs; this is " + a_graph_of(graph.kind)};
+                        std::string(name) + " is for " + kinds_with_option(option) + " graphs; this is " + a_graph_of(graph.kind)};
   Result<std::unique_ptr<FrameRenderer>> prepared = driver.prepare(graph, request);
   if (!prepared && prepared.error().file.empty()) {
     Diagnostic named = prepared.error();

@@ -91,11 +91,10 @@ class SurfaceFrames : public FrameRenderer {
     view.frame = frame;
     SurfaceRenderOptions options = options_;
     options.progress = progress;
-    Result<Image> background =
-        environment_ ? environment_->seen_by(camera_, view.width, view.height, frame, {options.threads, {}, options.cancel})
-                     : Image{};
+    Result<std::optional<Image>> background = environment_seen_by(
+        environment_.get(), camera_, view.width, view.height, frame, {options.threads, {}, options.cancel});
     if (!background) return background.error();
-    if (environment_) options.background = &*background;
+    if (*background) options.background = &**background;
     SurfaceRenderStats stats;
     Result<Image> image = render_surface(kernel, params, scene_, camera_, view, options, &stats);
     report.kernel_samples = stats.visible_samples;
