@@ -30,6 +30,7 @@ struct RenderArguments {
   std::string backend = "tiered";
   int width = 0;
   int samples_per_pixel = 1;
+  std::string shadows = "cached";
   bool no_shadows = false;
   std::string object;
   std::vector<std::string> search_paths;
@@ -55,7 +56,9 @@ Result<RenderRequest> render_request(const RenderArguments& arguments) {
   request.threads = arguments.threads;
   request.samples_per_pixel = arguments.samples_per_pixel;
   request.object = arguments.object;
-  request.shadows = !arguments.no_shadows;
+  request.shadows = arguments.no_shadows || arguments.shadows == "off" ? ShadowMode::off
+                    : arguments.shadows == "exact"                     ? ShadowMode::exact
+                                                                       : ShadowMode::cached;
   request.step = arguments.step;
   request.jitter = arguments.jitter;
   request.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
@@ -180,7 +183,14 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--spp", arguments->samples_per_pixel,
                       "surface graphs: jittered samples per pixel (default 1: the pixel centre)")
       ->check(CLI::Range(1, 256));
-  command->add_flag("--no-shadows", arguments->no_shadows, "surface and volume graphs: no shadow rays");
+  command
+      ->add_option("--shadows", arguments->shadows,
+                   "volume graphs: cached (default: each light's transmittance read from a grid marched once per "
+                   "frame), exact (a shadow ray from every shaded sample, the reference) or off; surface graphs: "
+                   "exact (their shadow rays always are) or off")
+      ->check(CLI::IsMember({"cached", "exact", "off"}));
+  command->add_flag("--no-shadows", arguments->no_shadows, "surface and volume graphs: --shadows off")
+      ->excludes("--shadows");
   command->add_option("--object", arguments->object,
                       "surface graphs: render on a preview object: sphere, torus, plane, box or a mesh file "
                       "(.obj, .ply) instead of the graph's scene");

@@ -15,9 +15,9 @@ constexpr GraphKindDriver drivers[] = {
     // Surface and volume samples at a point are the texture's: P, uv over
     // the render domain and the pixel's filter width, N = +z.
     {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr, texture_sample_at},
-    {GraphKind::surface, option_samples_per_pixel | option_object | option_no_shadows, "rendering", "samples", true,
+    {GraphKind::surface, option_samples_per_pixel | option_object | option_shadows, "rendering", "samples", true,
      prepare_surface, nullptr, texture_sample_at},
-    {GraphKind::volume, option_no_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume,
+    {GraphKind::volume, option_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume,
      volume_thumbnail, texture_sample_at},
     {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr,
      environment_sample_at},
@@ -31,7 +31,7 @@ static_assert([] {
 
 constexpr std::pair<RenderOption, const char*> option_names[] = {{option_samples_per_pixel, "--spp"},
                                                                  {option_object, "--object"},
-                                                                 {option_no_shadows, "--no-shadows"},
+                                                                 {option_shadows, "--shadows"},
                                                                  {option_step, "--step"},
                                                                  {option_jitter, "--jitter"}};
 
@@ -46,8 +46,10 @@ std::string kinds_with_option(RenderOption option) {
 }  // namespace
 
 unsigned RenderRequest::options() const {
-  return (samples_per_pixel != 1 ? option_samples_per_pixel : 0) | (!object.empty() ? option_object : 0) |
-         (!shadows ? option_no_shadows : 0) | (step ? option_step : 0) | (jitter ? option_jitter : 0);
+  const auto bit = [](bool set, RenderOption option) { return set ? static_cast<unsigned>(option) : 0u; };
+  return bit(samples_per_pixel != 1, option_samples_per_pixel) | bit(!object.empty(), option_object) |
+         bit(shadows != ShadowMode::cached, option_shadows) | bit(step.has_value(), option_step) |
+         bit(jitter, option_jitter);
 }
 
 std::string FrameReport::summary() const {

@@ -27,9 +27,17 @@ namespace shadetree {
 enum RenderOption : unsigned {
   option_samples_per_pixel = 1,  // --spp
   option_object = 2,             // --object
-  option_no_shadows = 4,         // --no-shadows
+  option_shadows = 4,            // --shadows exact or off (--no-shadows)
   option_step = 8,               // --step
   option_jitter = 16,            // --jitter
+};
+
+// How shaded samples find what reaches them of each light. A surface's
+// shadow rays are always exact: cached is exact there.
+enum class ShadowMode {
+  cached,  // volume: read from a grid marched once per light and frame (render/transmittance_grid.h)
+  exact,   // a shadow ray from every shaded sample toward every light
+  off,
 };
 
 // What a caller asks of a render, whatever the graph's kind.
@@ -38,7 +46,7 @@ struct RenderRequest {
   int threads = 0;                          // 0: all cores
   int samples_per_pixel = 1;                // surface: jittered samples per pixel
   std::string object;                       // surface: a preview object instead of the graph's scene
-  bool shadows = true;                      // surface, volume: and the scene's "shadows"
+  ShadowMode shadows = ShadowMode::cached;  // surface, volume: and the scene's "shadows"
   std::optional<float> step;                // volume: the march step (default: the volume's)
   bool jitter = false;                      // volume: jitter each ray's start (default: the volume's)
   bool draft = false;                       // volume: march coarser steps (editor previews while editing)

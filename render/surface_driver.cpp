@@ -81,7 +81,7 @@ class SurfaceFrames : public FrameRenderer {
       : scene_(std::move(scene)), environment_(std::move(environment)),
         camera_(scene_.desc().camera, view.width, view.height), view_(view) {
     options_.threads = request.threads;
-    options_.shadows = request.shadows;
+    options_.shadows = request.shadows != ShadowMode::off;
     options_.cancel = request.cancel;
   }
 

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+
+#include <tbb/enumerable_thread_specific.h>
 
 #include <glm/geometric.hpp>
 
@@ -14,6 +17,7 @@
 #include "schedule/image_tiles.h"
 #include "scene/lighting.h"
 #include "render/pixel_hash.h"
+#include "render/transmittance_grid.h"
 #include "schedule/stage_clock.h"
 #include "schedule/thread_bindings.h"
 
@@ -69,9 +73,27 @@ struct Batch {
   OutputBuffers outputs;
 };
 
+// The graph's opacity (default: its density), in [0, 1].
+float sample_opacity(const OutputLayout& layout, const Batch& batch, std::size_t i) {
+  const OutputId id = layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density;
+  return std::clamp(batch.outputs.plane(layout.plane(id))[i], 0.0f, 1.0f);
+}
+
+// The vector lanes a kernel call on `count` samples occupies, `width` at a
+// time (0: not counted).
+std::size_t lane_slots_of(std::size_t count, int width) {
+  if (width <= 0) return 0;
+  const std::size_t lanes = static_cast<std::size_t>(width);
+  return (count + lanes - 1) / lanes * lanes;
+}
+
+// The transmittance grid of each light that has one (render/transmittance_grid.h).
+using LightGrids = std::vector<std::optional<TransmittanceGrid>>;
+
 // Statistics of one thread's tiles, added to the totals once per tile.
 struct TileCounts {
-  long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, kernel_calls = 0, lane_slots = 0;
+  long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, shadow_lookups = 0,
+       kernel_calls = 0, lane_slots = 0;
 };
 
 // A ray from a shaded sample toward a light, through the volume.
@@ -112,7 +134,7 @@ struct TileScratch {
 class Marcher {
  public:
   Marcher(const Kernel& kernel, const Scene& scene, const VolumeDesc& volume, float step, float reference_step,
-          float shadow_step, bool jitter, bool shadows, const VolumeRenderOptions& options)
+          float shadow_step, bool jitter, bool shadows, const LightGrids& grids, const VolumeRenderOptions& options)
       : kernel_(kernel),
         layout_(kernel.outputs()),
         scene_(scene),
@@ -125,6 +147,7 @@ class Marcher {
         lit_(scene.desc().lighting == Lighting::lit),
         shadows_(lit_ && shadows && !scene.lights().empty()),
         refracts_(kernel.outputs().provides(OutputId::ior)),
+        grids_(grids),
         options_(options),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
@@ -200,6 +223,7 @@ class Marcher {
     counts.density_samples += marched.density_samples;
     counts.gradient_samples += marched.gradient_samples;
     counts.shadow_samples += marched.shadow_samples;
+    counts.shadow_lookups += marched.shadow_lookups;
     counts.kernel_calls += marched.kernel_calls;
     counts.lane_slots += marched.lane_slots;
   }
@@ -230,8 +254,9 @@ class Marcher {
                                                                                           : sample.hit.world_normal;
       point.shading_normal = point.geometric_normal;
       if (!shadows_) continue;
-      const glm::vec3 x = point.point + 1e-4f * (1.0f + glm::length(point.point)) * point.geometric_normal;
-      for (std::size_t l = 0; l < lights; ++l) add_shadow_ray(x, l, (k - first) * lights + l, shadow_rays);
+      const float offset = 1e-4f * (1.0f + glm::length(point.point));
+      shadow_from(point.point, point.geometric_normal, offset, 0.0f, (k - first) * lights, transmittance, shadow_rays,
+                  scratch.counts);
     }
     march_shadows(shadow_rays, transmittance, scratch);
     for (std::size_t k = first; k < last; ++k) {
@@ -256,6 +281,29 @@ class Marcher {
     shadow.t = std::max(span ? span->near : 0.0f, 0.0f);
     shadow.end = span ? std::min(span->far, distance) : 0.0f;
     shadow.slot = slot;
+  }
+
+  // What reaches `point` of each light, from `offset` out along its
+  // normal: looked up in the light's grid where it has one, else a shadow
+  // ray to march; light l's goes to slot first + l. A lookup leaves from
+  // at least `spacings` times the grid's ray spacing (a shadow map's normal
+  // offset: from √2 spacings, the four light rays it interpolates pass on
+  // the lit side of the point's tangent plane, where a lit surface does
+  // not shadow them).
+  void shadow_from(const glm::vec3& point, const glm::vec3& normal, float offset, float spacings, std::size_t first,
+                   std::vector<float>& transmittance, std::vector<ShadowRay>& rays, TileCounts& counts) const {
+    for (std::size_t l = 0; l < scene_.lights().size(); ++l) {
+      if (l < grids_.size() && grids_[l]) {
+        ++counts.shadow_lookups;
+        const std::optional<float> looked_up =
+            grids_[l]->at(point + std::max(offset, spacings * grids_[l]->spacing()) * normal);
+        if (looked_up) {
+          transmittance[first + l] = *looked_up;
+          continue;
+        }
+      }
+      add_shadow_ray(point + offset * normal, l, first + l, rays);
+    }
   }
 
   // Gradients serve the lighting and the refraction.
@@ -296,21 +344,14 @@ class Marcher {
     scratch.bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
     scratch.counts.density_samples += static_cast<long>(count);
     scratch.counts.kernel_calls += 1;
-    if (options_.lane_width > 0) {
-      const std::size_t width = static_cast<std::size_t>(options_.lane_width);
-      scratch.counts.lane_slots += static_cast<long>((count + width - 1) / width * width);
-    }
+    scratch.counts.lane_slots += static_cast<long>(lane_slots_of(count, options_.lane_width));
   }
 
   float output(const Batch& batch, OutputId id, std::size_t i) const {
     return batch.outputs.plane(layout_.plane(id))[i];
   }
 
-  // The graph's opacity (default: its density), in [0, 1].
-  float opacity(const Batch& batch, std::size_t i) const {
-    return std::clamp(output(batch, layout_.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density, i),
-                      0.0f, 1.0f);
-  }
+  float opacity(const Batch& batch, std::size_t i) const { return sample_opacity(layout_, batch, i); }
 
   // 1989: alpha_k = 1 - (1 - opacity)^(length / reference step).
   float segment_alpha(float opacity, float length) const {
@@ -374,8 +415,8 @@ class Marcher {
       // thin smoke) every sample would otherwise send rays through all of
       // it. Per reference step, so that the choice does not follow the step.
       if (opacity(scratch.samples, i) * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
-      const glm::vec3 x = ray.at(ray.sample_t()) + 2.0f * reference_step_ * normals[i];
-      for (std::size_t l = 0; l < lights; ++l) add_shadow_ray(x, l, i * lights + l, rays);
+      shadow_from(ray.at(ray.sample_t()), normals[i], 2.0f * reference_step_, std::sqrt(2.0f), i * lights,
+                  transmittance, rays, scratch.counts);
     }
     march_shadows(rays, transmittance, scratch);
     return transmittance;
@@ -486,9 +527,66 @@ class Marcher {
   glm::vec3 lo_, hi_;
   float step_, reference_step_, shadow_step_;
   bool jitter_, lit_, shadows_, refracts_;
+  const LightGrids& grids_;
   const VolumeRenderOptions& options_;
   glm::vec3 background_;
 };
+
+// The lights' transmittance grids hold at most this many values in all
+// (128 MB): a grid whose rays would be finer grows its spacing to fit.
+constexpr std::size_t max_grid_values = std::size_t{1} << 25;
+
+// The world distance between neighbouring pixels' rays at `at`: the
+// detail the image can show there.
+float pixel_footprint(const Camera& camera, const VolumeView& view, const glm::vec3& at) {
+  const float x = 0.5f * static_cast<float>(view.width), y = 0.5f * static_cast<float>(view.height);
+  const Ray middle = camera.ray(x, y), next = camera.ray(x + 1.0f, y);
+  const float distance = glm::length(at - middle.origin);
+  return glm::length((next.origin + distance * next.direction) - (middle.origin + distance * middle.direction));
+}
+
+// Each light's transmittance grid, its rays as far apart as the shadow
+// march's steps or the image's pixels at the bounds' centre, whichever is
+// wider (finer shadow detail could not be seen), each filled with the
+// kernel on the frame's bindings.
+Result<LightGrids> fill_light_grids(const Kernel& kernel, ThreadBindings& bindings, const Scene& scene,
+                                    const VolumeDesc& volume, const Camera& camera, const VolumeView& view,
+                                    float step, float shadow_step, const VolumeRenderOptions& options,
+                                    std::atomic<long long>& kernel_ns, std::atomic<long>& lane_slots) {
+  const glm::vec3 lo(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]);
+  const glm::vec3 hi(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]);
+  TransmittanceGridSpec spec;
+  spec.spacing = std::max(shadow_step, pixel_footprint(camera, view, 0.5f * (lo + hi)));
+  spec.shadow_step = shadow_step;
+  spec.reference_step = reference_step(volume);
+  spec.termination = options.termination;
+  spec.max_values = max_grid_values / scene.lights().size();
+  spec.threads = options.threads;
+  spec.cancel = options.cancel;
+  tbb::enumerable_thread_specific<std::unique_ptr<Batch>> batches;
+  const OpacitySampler opacity_at = [&](const std::vector<glm::vec3>& points,
+                                        const std::vector<glm::vec3>& toward_light, std::vector<float>& opacities) {
+    std::unique_ptr<Batch>& batch = batches.local();
+    if (!batch || batch->inputs.count() < points.size()) batch = std::make_unique<Batch>(points.size(), kernel, step);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      store3(batch->inputs, GlobalId::P, i, points[i]);
+      store3(batch->inputs, GlobalId::I, i, toward_light[i]);
+    }
+    {
+      StageClock clock(kernel_ns);
+      bindings.local().run(batch->inputs.inputs(), batch->outputs.planes(), points.size());
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) opacities[i] = sample_opacity(kernel.outputs(), *batch, i);
+    lane_slots += static_cast<long>(lane_slots_of(points.size(), options.lane_width));
+  };
+  LightGrids grids;
+  for (const Light& light : scene.lights()) {
+    Result<std::optional<TransmittanceGrid>> grid = TransmittanceGrid::build(light, lo, hi, spec, opacity_at);
+    if (!grid) return grid.error();
+    grids.push_back(std::move(*grid));
+  }
+  return grids;
+}
 
 class VolumeFrames : public FrameRenderer {
  public:
@@ -509,22 +607,32 @@ class VolumeFrames : public FrameRenderer {
     if (*background) options.background = &**background;
     VolumeRenderStats stats;
     Result<Image> image = render_volume(kernel, params, scene_, volume_, camera_, view, options, &stats);
-    report.kernel_samples = stats.density_samples;
+    report.kernel_samples = stats.density_samples + stats.grid_samples;
     report.kernel_seconds = stats.kernel_seconds;
     report.figures = {{"rays", static_cast<double>(stats.rays)},
                       {"density_samples", static_cast<double>(stats.density_samples)},
+                      {"shadow_samples", static_cast<double>(stats.shadow_samples)},
+                      {"grid_samples", static_cast<double>(stats.grid_samples)},
+                      {"shadow_lookups", static_cast<double>(stats.shadow_lookups)},
+                      {"grid_mb", static_cast<double>(stats.grid_bytes) / 1e6},
+                      {"grid_s", stats.grid_seconds},
                       {"lane_utilisation", stats.lane_utilisation()},
                       {"kernel_s", stats.kernel_seconds},
                       {"march_s", stats.march_seconds}};
-    char text[320];
-    std::snprintf(text, sizeof text, "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadows)",
-                  view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
-                  stats.shadow_samples);
+    char text[400];
+    int length = std::snprintf(text, sizeof text,
+                               "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadow rays)",
+                               view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
+                               stats.shadow_samples);
+    if (stats.grid_bytes > 0)
+      std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+                    ", shadow grids of %.1f MB: %ld samples in %.3f s, %ld lookups", stats.grid_bytes / 1e6,
+                    stats.grid_samples, stats.grid_seconds, stats.shadow_lookups);
     report.what = text;
     std::snprintf(text, sizeof text,
                   "thread time: kernel %.3f s = %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
                   stats.kernel_seconds,
-                  stats.kernel_seconds > 0 ? static_cast<double>(stats.density_samples) / stats.kernel_seconds / 1e6
+                  stats.kernel_seconds > 0 ? static_cast<double>(report.kernel_samples) / stats.kernel_seconds / 1e6
                                            : 0.0,
                   100.0 * stats.lane_utilisation(), options.lane_width, stats.march_seconds);
     report.details = text;
@@ -570,8 +678,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
       return invalid_input(problem);
   const float shadow_step = options.shadow_step != 0.0f ? options.shadow_step : reference_step(volume);
   const bool jitter = options.jitter.value_or(volume.jitter);
-  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), shadow_step, jitter,
-                        options.shadows && scene.desc().shadows, options);
+  const bool shadows = options.shadows != ShadowMode::off && scene.desc().shadows;
 
   Image image;
   image.width = view.width;
@@ -579,8 +686,23 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   image.channels = 3;
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
   ThreadBindings bindings(kernel, params.data(), volume_uniforms(view.frame, step));
-  std::atomic<long long> tile_ns{0}, kernel_ns{0};
-  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, kernel_calls{0}, lane_slots{0};
+  std::atomic<long long> tile_ns{0}, kernel_ns{0}, grid_kernel_ns{0};
+  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, shadow_lookups{0},
+      kernel_calls{0}, lane_slots{0};
+
+  const auto grids_start = std::chrono::steady_clock::now();
+  LightGrids grids;
+  if (shadows && options.shadows == ShadowMode::cached && scene.desc().lighting == Lighting::lit &&
+      !scene.lights().empty()) {
+    Result<LightGrids> filled =
+        fill_light_grids(kernel, bindings, scene, volume, camera, view, step, shadow_step, options, grid_kernel_ns,
+                         lane_slots);
+    if (!filled) return filled.error();
+    grids = std::move(*filled);
+  }
+  const double grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - grids_start).count();
+  const Marcher marcher(kernel, scene, volume, step, reference_step(volume), shadow_step, jitter, shadows, grids,
+                        options);
 
   Status done = for_each_tile(
       view.width, view.height, tile_size, options.threads,
@@ -600,6 +722,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         density_samples += counts.density_samples;
         gradient_samples += counts.gradient_samples;
         shadow_samples += counts.shadow_samples;
+        shadow_lookups += counts.shadow_lookups;
         kernel_calls += counts.kernel_calls;
         lane_slots += counts.lane_slots;
         return counts.rays;
@@ -608,12 +731,19 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   if (!done) return done.error();
 
   if (stats) {
-    stats->kernel_seconds = seconds(kernel_ns);
-    stats->march_seconds = seconds(tile_ns) - stats->kernel_seconds;
+    stats->kernel_seconds = seconds(kernel_ns) + seconds(grid_kernel_ns);
+    stats->march_seconds = seconds(tile_ns) - seconds(kernel_ns);
     stats->rays = rays;
     stats->density_samples = density_samples;
     stats->gradient_samples = gradient_samples;
     stats->shadow_samples = shadow_samples;
+    stats->shadow_lookups = shadow_lookups;
+    for (const std::optional<TransmittanceGrid>& grid : grids)
+      if (grid) {
+        stats->grid_samples += grid->samples();
+        stats->grid_bytes += grid->bytes();
+      }
+    stats->grid_seconds = grid_seconds;
     stats->kernel_calls = kernel_calls;
     stats->lane_slots = lane_slots;
   }

@@ -41,7 +41,7 @@ struct VolumeRenderOptions {
   float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step); others are checked
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
-  bool shadows = true;  // and the scene's "shadows": a secondary march toward each light
+  ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
   float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
@@ -59,11 +59,16 @@ struct VolumeRenderStats {
   long density_samples = 0;   // graph evaluations: march samples and gradient probes
   long gradient_samples = 0;  // of those, the gradient probes
   long shadow_samples = 0;    // and the samples of shadow rays
+  long grid_samples = 0;      // and the samples that filled the lights' transmittance grids
+  long shadow_lookups = 0;    // of those grids, instead of shadow rays
+  std::size_t grid_bytes = 0;
+  double grid_seconds = 0;    // wall time of filling the grids, before the march
   long kernel_calls = 0;
   long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)
 
   double lane_utilisation() const {
-    return lane_slots > 0 ? static_cast<double>(density_samples) / static_cast<double>(lane_slots) : 0.0;
+    return lane_slots > 0 ? static_cast<double>(density_samples + grid_samples) / static_cast<double>(lane_slots)
+                          : 0.0;
   }
 };
 

@@ -236,6 +236,32 @@ TEST_F(Cli, VolumeGraphsRenderThroughTheRayMarcher) {
   EXPECT_EQ(image->width, 24);
 }
 
+// --shadows: cached (the default) reads the lights' transmittance grids,
+// exact marches shadow rays, off has neither; --no-shadows is off, and
+// other kinds refuse the option as they refuse --step.
+TEST_F(Cli, ShadowModesOfTheRayMarcher) {
+  const std::string out = (directory_ / "sphere.png").string();
+  const std::string render = "render " + gallery + "noisy_sphere.json -o " + out + " --size 24x24 --step 0.05";
+  for (const auto& [options, grids] : {std::pair{"", true}, std::pair{"--shadows cached", true},
+                                       std::pair{"--shadows exact", false}, std::pair{"--shadows off", false},
+                                       std::pair{"--no-shadows", false}}) {
+    const CommandResult run = shadetree(render + " " + options);
+    ASSERT_EQ(run.status, 0) << options << ": " << run.err;
+    EXPECT_EQ(run.err.find("shadow grids of ") != std::string::npos, grids) << options << ": " << run.err;
+    const bool off = std::string(options).find("off") != std::string::npos ||
+                     std::string(options).find("no-shadows") != std::string::npos;
+    EXPECT_EQ(run.err.find(", 0 for shadow rays") != std::string::npos, off) << options << ": " << run.err;
+  }
+  for (const char* options : {"--shadows sometimes", "--shadows exact --no-shadows"}) {
+    const CommandResult run = shadetree(render + " " + options);
+    EXPECT_EQ(run.status, 2) << options << ": " << run.err;
+  }
+  const CommandResult texture = shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --shadows off");
+  EXPECT_EQ(texture.status, 2);
+  EXPECT_NE(texture.err.find("--shadows is for surface or volume graphs; this is a texture graph"), std::string::npos)
+      << texture.err;
+}
+
 TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
   const std::string out = (directory_ / "out.png").string();
   const std::string bounded = R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}})";

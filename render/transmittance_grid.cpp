@@ -1,0 +1,229 @@
+#include "render/transmittance_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "render/density_gradient.h"
+#include "scene/shapes.h"
+#include "schedule/image_tiles.h"
+
+namespace shadetree {
+namespace {
+
+// Light rays marched together, as a tile of the grid's (u, v) plane.
+constexpr int rays_per_side = 16;
+
+// The optical depth of a spent ray when the march has no termination:
+// transmittance e^-80, below any float image's resolution.
+constexpr float max_optical_depth = 80.0f;
+
+std::array<glm::vec3, 8> corners(const glm::vec3& lo, const glm::vec3& hi) {
+  std::array<glm::vec3, 8> result;
+  for (int c = 0; c < 8; ++c) result[c] = {c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z};
+  return result;
+}
+
+// 1989: a segment of `length` with the opacity of a reference step lets
+// through (1 - opacity)^(length / reference step): its optical depth is
+// -ln(1 - opacity) length / reference step.
+float segment_depth(float opacity, float length, float reference_step) {
+  return opacity >= 1.0f ? std::numeric_limits<float>::infinity()
+                         : -std::log1p(-opacity) * (length / reference_step);
+}
+
+// One light ray of the grid being marched: values k of its row are the
+// optical depth at depth first + k spacing.
+struct LightRay {
+  float* values = nullptr;
+  glm::vec3 start{0.0f}, direction{0.0f};
+  float near = 0.0f, far = 0.0f;  // where it crosses the bounds
+  int k = 0;                      // its next segment, from value k to value k + 1
+  float optical_depth = 0.0f;
+};
+
+}  // namespace
+
+Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& light, const glm::vec3& lo,
+                                                                 const glm::vec3& hi,
+                                                                 const TransmittanceGridSpec& spec,
+                                                                 const OpacitySampler& opacity_at) {
+  TransmittanceGrid grid;
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float diagonal = glm::length(hi - lo);
+  grid.perspective_ = light.type == LightType::point;
+  const glm::vec3 toward = grid.perspective_ ? centre - light.position : light.direction;
+  if (!(glm::length(toward) > 0.0f)) return std::optional<TransmittanceGrid>();
+  const RayFrame frame = ray_frame(glm::normalize(toward));
+  grid.axis_w_ = frame.along;
+  grid.axis_u_ = frame.across_v;
+  grid.axis_v_ = frame.across_w;
+  grid.origin_ = grid.perspective_ ? light.position : centre - diagonal * grid.axis_w_;
+
+  // The bounds in light space. A point light's rays fan out over the
+  // bounds only if all of them lie well in front of it.
+  glm::vec3 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
+  for (const glm::vec3& corner : corners(lo, hi)) {
+    if (grid.perspective_ && glm::dot(corner - grid.origin_, grid.axis_w_) < 0.1f * diagonal)
+      return std::optional<TransmittanceGrid>();
+    const glm::vec3 c = grid.light_space(corner);
+    low = glm::min(low, c);
+    high = glm::max(high, c);
+  }
+  // Distances from a point light: the nearest point of the bounds is not a corner.
+  if (grid.perspective_) low.z = glm::length(glm::clamp(light.position, lo, hi) - light.position);
+
+  // Lateral spacing in world units at the bounds' centre; angular for a
+  // point light.
+  const float lateral =
+      grid.perspective_ ? spec.spacing / glm::dot(centre - light.position, grid.axis_w_) : spec.spacing;
+  grid.spacing_ = {lateral, lateral, spec.shadow_step};
+  const auto count = [&](int axis) {
+    return std::max(2, static_cast<int>(std::ceil((high[axis] - low[axis]) / grid.spacing_[axis])) + 1);
+  };
+  for (;;) {
+    for (int axis = 0; axis < 3; ++axis) grid.counts_[axis] = count(axis);
+    const double values = static_cast<double>(grid.counts_[0]) * grid.counts_[1] * grid.counts_[2];
+    if (values <= static_cast<double>(spec.max_values)) break;
+    // Over the bound: wider between rays first; coarser along them only
+    // once the rays are few.
+    if (grid.counts_[0] > 2 || grid.counts_[1] > 2) {
+      grid.spacing_.x *= 1.25f;
+      grid.spacing_.y *= 1.25f;
+    } else {
+      grid.spacing_.z *= 1.25f;
+    }
+  }
+  grid.first_ = low;
+  grid.world_spacing_ = spec.spacing * grid.spacing_.x / lateral;
+  grid.values_.assign(static_cast<std::size_t>(grid.counts_[0]) * grid.counts_[1] * grid.counts_[2], 0.0f);
+  // Where the light is spent (transmittance below the termination), the
+  // depth stops a little past it: finite, so that a lookup between a spent
+  // ray and a lit one fades over the rays' spacing as the light does.
+  grid.termination_ = spec.termination;
+  grid.spent_depth_ = spec.termination > 0.0f ? 1.0f - std::log(spec.termination) : max_optical_depth;
+
+  std::atomic<long> samples{0};
+  const int depth_count = grid.counts_[2];
+  Status marched = for_each_tile(
+      grid.counts_[0], grid.counts_[1], rays_per_side, spec.threads,
+      [&](const Tile& tile) -> long {
+        std::vector<LightRay> rays;
+        for (int j = tile.y0; j < tile.y0 + tile.height; ++j)
+          for (int i = tile.x0; i < tile.x0 + tile.width; ++i) {
+            const float u = grid.first_.x + static_cast<float>(i) * grid.spacing_.x;
+            const float v = grid.first_.y + static_cast<float>(j) * grid.spacing_.y;
+            LightRay ray;
+            ray.start = grid.ray_start(u, v);
+            ray.direction = grid.ray_direction(u, v);
+            const std::optional<Span> span = clip_to_box(Ray{ray.start, ray.direction}, lo, hi);
+            if (!span || span->far <= span->near) continue;
+            ray.near = span->near;
+            ray.far = span->far;
+            ray.values = grid.values_.data() + (static_cast<std::size_t>(j) * grid.counts_[0] + i) * depth_count;
+            ray.k = std::clamp(static_cast<int>(std::floor((ray.near - grid.first_.z) / grid.spacing_.z)), 0,
+                               depth_count - 1);
+            rays.push_back(ray);
+          }
+        std::vector<LightRay*> live;
+        for (LightRay& ray : rays) live.push_back(&ray);
+        std::vector<glm::vec3> points, directions;
+        std::vector<float> opacities;
+        long tile_samples = 0;
+        while (!live.empty()) {
+          // Segment k of a ray: depths [first + k spacing, first + (k + 1)
+          // spacing] where they cross the bounds, sampled at its middle.
+          points.clear();
+          directions.clear();
+          for (const LightRay* ray : live) {
+            const float begin = std::max(grid.first_.z + static_cast<float>(ray->k) * grid.spacing_.z, ray->near);
+            const float end = std::min(grid.first_.z + static_cast<float>(ray->k + 1) * grid.spacing_.z, ray->far);
+            points.push_back(ray->start + 0.5f * (begin + end) * ray->direction);
+            directions.push_back(-ray->direction);
+          }
+          opacities.resize(points.size());
+          opacity_at(points, directions, opacities);
+          tile_samples += static_cast<long>(points.size());
+          for (std::size_t r = 0; r < live.size(); ++r) {
+            LightRay& ray = *live[r];
+            const float begin = std::max(grid.first_.z + static_cast<float>(ray.k) * grid.spacing_.z, ray.near);
+            const float end = std::min(grid.first_.z + static_cast<float>(ray.k + 1) * grid.spacing_.z, ray.far);
+            ray.optical_depth = std::min(
+                ray.optical_depth + segment_depth(opacities[r], std::max(end - begin, 0.0f), spec.reference_step),
+                grid.spent_depth_);
+            ++ray.k;
+            const bool spent = ray.optical_depth >= grid.spent_depth_ - 1.0f;
+            if (spent) ray.optical_depth = grid.spent_depth_;
+            // The rest of the row keeps what the light has left here.
+            const bool past = ray.k + 1 >= depth_count || end >= ray.far || spent;
+            std::fill(ray.values + ray.k, past ? ray.values + depth_count : ray.values + ray.k + 1, ray.optical_depth);
+          }
+          live.erase(std::remove_if(live.begin(), live.end(),
+                                    [&](const LightRay* ray) {
+                                      const float next = grid.first_.z + static_cast<float>(ray->k) * grid.spacing_.z;
+                                      return ray->k + 1 >= depth_count || next >= ray->far ||
+                                             ray->optical_depth == grid.spent_depth_;
+                                    }),
+                     live.end());
+        }
+        samples += tile_samples;
+        return tile_samples;
+      },
+      {}, spec.cancel);
+  if (!marched) return marched.error();
+  grid.samples_ = samples;
+  return std::optional<TransmittanceGrid>(std::move(grid));
+}
+
+glm::vec3 TransmittanceGrid::light_space(const glm::vec3& x) const {
+  const glm::vec3 d = x - origin_;
+  const float depth = glm::dot(d, axis_w_);
+  if (!perspective_) return {glm::dot(d, axis_u_), glm::dot(d, axis_v_), depth};
+  return {glm::dot(d, axis_u_) / depth, glm::dot(d, axis_v_) / depth, glm::length(d)};
+}
+
+glm::vec3 TransmittanceGrid::ray_direction(float u, float v) const {
+  return perspective_ ? glm::normalize(axis_w_ + u * axis_u_ + v * axis_v_) : axis_w_;
+}
+
+glm::vec3 TransmittanceGrid::ray_start(float u, float v) const {
+  return perspective_ ? origin_ : origin_ + u * axis_u_ + v * axis_v_;
+}
+
+std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
+  if (perspective_ && !(glm::dot(x - origin_, axis_w_) > 0.0f)) return 1.0f;  // behind the light
+  const glm::vec3 c = light_space(x);
+  float index[3];
+  int cell[3];
+  float weight[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    index[axis] = (c[axis] - first_[axis]) / spacing_[axis];
+    // A light ray that passes beside the bounds crosses no volume.
+    if (axis < 2 && !(index[axis] > -1.0f && index[axis] < static_cast<float>(counts_[axis]))) return 1.0f;
+    index[axis] = std::clamp(index[axis], 0.0f, static_cast<float>(counts_[axis] - 1));
+    cell[axis] = std::min(static_cast<int>(index[axis]), counts_[axis] - 2);
+    weight[axis] = index[axis] - static_cast<float>(cell[axis]);
+  }
+  float least = std::numeric_limits<float>::infinity(), most = 0.0f;
+  const auto along = [&](int i, int j) {
+    const float near = value(i, j, cell[2]), far = value(i, j, cell[2] + 1);
+    least = std::min(least, near);
+    most = std::max(most, far);
+    return near + weight[2] * (far - near);
+  };
+  const auto across = [&](int j) {
+    return along(cell[0], j) + weight[0] * (along(cell[0] + 1, j) - along(cell[0], j));
+  };
+  // Optical depth is what varies linearly across a uniform medium, as the
+  // path length does, so it is what is interpolated.
+  const float transmittance = std::exp(-(across(cell[1]) + weight[1] * (across(cell[1] + 1) - across(cell[1]))));
+  // Rays that disagree: an edge of a shadow passes between them, which
+  // the interpolation would blur; the caller marches a shadow ray.
+  if (std::exp(-least) - std::exp(-most) > max_spread) return std::nullopt;
+  return transmittance < termination_ ? 0.0f : transmittance;
+}
+
+}  // namespace shadetree
