@@ -7,7 +7,9 @@
 // registry's half of each op (definition(), lay_out() of its attributes
 // and their helpers: the functions returning an OpDef, an AttributeSpec or
 // the names an attribute takes, or taking Attributes) and `using namespace define;` are taken out, so
-// that what remains is C++17 with no dependency on the registry.
+// that what remains is C++17 with no dependency on the registry. The
+// interval forms (the headers named *interval*, each op's
+// evaluate_interval) are left out too: emitted kernels run on floats.
 //
 //   embed_library_source SOURCE_ROOT OUTPUT.cpp ROOT_HEADER...
 #include <algorithm>
@@ -34,7 +36,7 @@ struct Library {
     if (!file) throw std::runtime_error("cannot read " + root + "/" + header);
     static const std::regex local(R"re(^\s*#include\s+"([^"]+)")re"), system(R"re(^\s*#include\s+<([^>]+)>)re"),
         once(R"re(^\s*#pragma\s+once)re"), definition(
-            R"re(^\s*(static |inline )?((OpDef|AttributeSpec|std::vector<std::string>) \w+\(|void \w+\(const Attributes&))re"),
+            R"re(^\s*(static |inline )?((OpDef|AttributeSpec|std::vector<std::string>) \w+\(|void \w+\(const Attributes&|void evaluate_interval\())re"),
         using_define(R"re(^\s*using namespace define;)re"), opening(R"re(^\s*#\s*if)re"),
         alternative(R"re(^\s*#\s*(else|elif))re"), closing(R"re(^\s*#\s*endif)re");
     std::string text, line;
@@ -47,7 +49,8 @@ struct Library {
       if (std::regex_search(line, definition)) {
         skip_function(file, line);
       } else if (std::regex_search(line, match, local)) {
-        if (match[1] != "nodes/op_definition.h") add(match[1]);
+        const std::string included = match[1];
+        if (included != "nodes/op_definition.h" && included.find("interval") == std::string::npos) add(included);
       } else if (std::regex_search(line, using_define)) {
         continue;
       } else if (std::regex_search(line, match, system)) {

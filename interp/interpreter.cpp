@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "interp/exec_context.h"
-#include "nodes/registry.h"
+#include "interp/op_constants.h"
 
 namespace shadetree {
 namespace {
@@ -37,15 +37,7 @@ class InterpretedKernel final : public Kernel {
       if (instr.kind == IrOpKind::end_region) --depth;
       if (instr.kind != IrOpKind::op) continue;
       kernels_[i] = interp::op_kernel(instr.op);
-      OpConstants& constants = constants_[i];
-      constants.data = ir_.data.data() + instr.data_offset;
-      constants.data_count = instr.data_count;
-      constants.immediate[0] = instr.immediate[0];
-      constants.immediate[1] = instr.immediate[1];
-      constants.components = component_count(instr.type);
-      for (int a = 0; a < instr.arg_count; ++a) constants.arg_components[a] = component_count(argument_type(instr, a));
-      if (op_def(instr.op).tables == OpTables::noise)
-        constants.tables = &noise_tables(static_cast<std::uint32_t>(instr.immediate[0]));
+      constants_[i] = interp::op_constants(ir_, instr);
     }
     register_floats_ = offset;
   }

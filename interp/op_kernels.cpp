@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "interp/exec_context.h"
+#include "interp/op_table.h"
 #include "nodes/ops/evaluated.h"
 
 namespace shadetree::interp {
@@ -38,15 +39,12 @@ constexpr OpKernel kernel_of() {
   return nullptr;
 }
 
-constexpr OpKernel kernels[] = {
-#define SHADETREE_NO_KERNEL(name, type, variability, kinds, doc) nullptr,
-    SHADETREE_GLOBALS(SHADETREE_NO_KERNEL)
-#undef SHADETREE_NO_KERNEL
-#define SHADETREE_KERNEL(name) kernel_of<ops::name>(),
-    SHADETREE_LIBRARY_OPS(SHADETREE_KERNEL)
-#undef SHADETREE_KERNEL
+template <class Op>
+struct LaneKernel {
+  static constexpr OpKernel value = kernel_of<Op>();
 };
-static_assert(std::size(kernels) == op_count);
+
+constexpr auto kernels = op_table<LaneKernel>(OpKernel{nullptr});
 
 }  // namespace
 

@@ -22,6 +22,12 @@ inline bool either(bool a, bool b) { return a || b; }
 inline bool negate(bool a) { return !a; }
 inline bool differ(bool a, bool b) { return a != b; }
 
+// x * x, named so that an interval lane can bound it below by 0.
+template <class F>
+F square(F x) {
+  return x * x;
+}
+
 inline float floor(float x) { return std::floor(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float sqrt(float x) { return std::sqrt(x); }

@@ -4,6 +4,7 @@
 // nodes/op_frame.h); the formulas are in nodes/semantics/.
 #pragma once
 
+#include "nodes/interval_frame.h"
 #include "nodes/op_definition.h"
 #include "nodes/op_frame.h"
 #include "nodes/semantics/cellular.h"
@@ -38,6 +39,12 @@ struct dnoise {
   static void evaluate(const X& x) {
     frame::store_vec3(x, sem::dnoise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2)));
   }
+  static void evaluate_interval(const IntervalFrame& x) {
+    // Its proven bound: the product rule over the knots is not worth
+    // enclosing cell by cell for an op no volume graph uses.
+    const lanes::Interval bound = lanes::lattice_range(x.in(0, 0), x.in(0, 1), x.in(0, 2), lanes::noise_derivative_bound);
+    frame::store_vec3(x, {bound, bound, bound});
+  }
 };
 
 struct vnoise {
@@ -62,6 +69,10 @@ struct noise_improved {
   template <class X>
   static void evaluate(const X& x) {
     x.out() = sem::noise_improved(x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
+  static void evaluate_interval(const IntervalFrame& x) {
+    // Its proven bound (its hash is bits all the way).
+    x.out() = lanes::lattice_range(x.in(0, 0), x.in(0, 1), x.in(0, 2), lanes::improved_noise_bound);
   }
 };
 

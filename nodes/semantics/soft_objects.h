@@ -16,8 +16,8 @@ F soft_sphere(const Vec3<F>& p, const Vec3<F>& center, F radius, F softness) {
   Vec3<F> d{p.x - center.x, p.y - center.y, p.z - center.z};
   F inner = max(radius - softness * 0.5f, splat<F>(0.0f));
   F outer = radius + softness * 0.5f;
-  F inner_squared = inner * inner, outer_squared = outer * outer;
-  F distance_squared = dot3(d, d);
+  F inner_squared = square(inner), outer_squared = square(outer);
+  F distance_squared = length_squared(d);
   F ramp = (outer_squared - distance_squared) / select(outer_squared > inner_squared, outer_squared - inner_squared,
                                                        splat<F>(1.0f));
   return select(distance_squared <= inner_squared, splat<F>(1.0f),
@@ -40,21 +40,21 @@ F soft_box(const Vec3<F>& p, const Vec3<F>& center, const Vec3<F>& half_size, F 
             abs(p.z - center.z) - half_size.z};
   Vec3<F> outside{max(q.x, splat<F>(0.0f)), max(q.y, splat<F>(0.0f)), max(q.z, splat<F>(0.0f))};
   F inside = min(max(q.x, max(q.y, q.z)), splat<F>(0.0f));
-  return soft_ramp(sqrt(dot3(outside, outside)) + inside, softness);
+  return soft_ramp(sqrt(length_squared(outside)) + inside, softness);
 }
 
 // A torus around the z axis through center.
 template <class F>
 F soft_torus(const Vec3<F>& p, const Vec3<F>& center, F major_radius, F minor_radius, F softness) {
   F dx = p.x - center.x, dy = p.y - center.y, dz = p.z - center.z;
-  F ring = sqrt(dx * dx + dy * dy) - major_radius;
-  return soft_ramp(sqrt(ring * ring + dz * dz) - minor_radius, softness);
+  F ring = sqrt(square(dx) + square(dy)) - major_radius;
+  return soft_ramp(sqrt(square(ring) + square(dz)) - minor_radius, softness);
 }
 
 // The unit vector along d, or `fallback` where d is 0 (or not finite).
 template <class F>
 Vec3<F> direction_or(const Vec3<F>& d, const Vec3<F>& fallback) {
-  F length = sqrt(dot3(d, d));
+  F length = sqrt(length_squared(d));
   auto usable = both(length > 0.0f, length < 3.0e38f);
   F inverse = 1.0f / select(usable, length, splat<F>(1.0f));
   return {select(usable, d.x * inverse, fallback.x), select(usable, d.y * inverse, fallback.y),
@@ -107,7 +107,7 @@ F grid_distance(const float* grid, const Vec3<F>& p) {
     const float lo = grid[axis] + 0.5f * voxel, hi = grid[axis] + (float(size[axis]) - 0.5f) * voxel;
     F clamped = min(max(coordinate[axis], splat<F>(lo)), splat<F>(hi));
     F beyond = coordinate[axis] - clamped;
-    outside = outside + select(beyond == beyond, beyond * beyond, splat<F>(0.0f));
+    outside = outside + select(beyond == beyond, square(beyond), splat<F>(0.0f));
     F position = (clamped - lo) * (1.0f / voxel);
     F base = min(floor(position), splat<F>(float(size[axis] > 1 ? size[axis] - 2 : 0)));
     cell[axis] = to_int(base);

@@ -29,14 +29,22 @@ F dot_n(const F* a, const F* b, int n) {
   return sum;
 }
 
+// dot_n(v, v, n), through square so that an interval lane keeps it >= 0.
+template <class F>
+F sum_of_squares_n(const F* v, int n) {
+  F sum = splat<F>(0.0f);
+  for (int c = 0; c < n; ++c) sum = sum + square(v[c]);
+  return sum;
+}
+
 template <class F>
 F length_n(const F* v, int n) {
-  return sqrt(dot_n(v, v, n));
+  return sqrt(sum_of_squares_n(v, n));
 }
 
 template <class F>
 void normalize_n(const F* v, int n, F* out) {
-  F inverse = inverse_length_or_zero(dot_n(v, v, n));
+  F inverse = inverse_length_or_zero(sum_of_squares_n(v, n));
   for (int c = 0; c < n; ++c) out[c] = v[c] * inverse;
 }
 

@@ -1,0 +1,97 @@
+// Interval evaluation of a program (see interval_program.h): one interval
+// register per component of each value; binding computes the uniform
+// values, evaluate() the varying ones in program order, ignoring region
+// markers.
+#include "interp/interval_program.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "interp/op_constants.h"
+
+namespace shadetree {
+
+using lanes::Interval;
+
+SampleBox::SampleBox() { std::fill(std::begin(planes), std::end(planes), lanes::everything()); }
+
+IntervalProgram::IntervalProgram(ShadeIR ir) : ir_(std::move(ir)), outputs_(output_layout(ir_)) {
+  kernels_.resize(ir_.code.size(), nullptr);
+  constants_.resize(ir_.code.size());
+  for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+    const IrInstr& instr = ir_.code[i];
+    if (instr.kind != IrOpKind::op) continue;
+    kernels_[i] = interp::interval_kernel(instr.op);
+    constants_[i] = interp::op_constants(ir_, instr);
+  }
+}
+
+BoundIntervalProgram IntervalProgram::bind(const float* params, const UniformInputs& uniforms) const {
+  return BoundIntervalProgram(*this, params, uniforms);
+}
+
+BoundIntervalProgram::BoundIntervalProgram(const IntervalProgram& program, const float* params,
+                                           const UniformInputs& uniforms)
+    : program_(&program), params_(params), uniforms_(uniforms) {
+  const std::vector<IrInstr>& code = program.ir_.code;
+  registers_.resize(code.size() * 3);
+  in_planes_.resize(code.size() * 3 * max_op_args);
+  out_planes_.resize(code.size() * 3);
+  auto plane = [&](std::int32_t value, int component) {
+    const int components = component_count(code[static_cast<std::size_t>(value)].type);
+    return &registers_[static_cast<std::size_t>(value) * 3 + static_cast<std::size_t>(std::min(component, components - 1))];
+  };
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    for (int a = 0; a < code[i].arg_count; ++a)
+      for (int c = 0; c < 3; ++c) in_planes_[(i * max_op_args + a) * 3 + c] = plane(code[i].args[a], c);
+    for (int c = 0; c < 3; ++c) out_planes_[i * 3 + c] = &registers_[i * 3 + c];
+  }
+  execute(/*uniform_pass=*/true, SampleBox{});
+  params_ = nullptr;
+}
+
+void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
+  const ShadeIR& ir = program_->ir_;
+  for (std::size_t i = 0; i < ir.code.size(); ++i) {
+    const IrInstr& instr = ir.code[i];
+    if (instr.uniform != uniform_pass) continue;
+    Interval* const* out = &out_planes_[i * 3];
+    const int components = component_count(instr.type);
+    switch (instr.kind) {
+      case IrOpKind::op:
+        program_->kernels_[i](
+            IntervalFrame{{&program_->constants_[i]}, &in_planes_[i * max_op_args * 3], out});
+        break;
+      case IrOpKind::constant:
+        for (int c = 0; c < components; ++c) *out[c] = ir.data[instr.data_offset + std::min(c, instr.data_count - 1)];
+        break;
+      case IrOpKind::param:
+        for (int c = 0; c < components; ++c) *out[c] = params_[instr.immediate[0] + c];
+        break;
+      case IrOpKind::global: {
+        const auto id = static_cast<GlobalId>(instr.immediate[0]);
+        for (int c = 0; c < components; ++c)
+          *out[c] = instr.uniform ? Interval(uniforms_.get(id, c)) : box.planes[global_def(id).first + c];
+        break;
+      }
+      case IrOpKind::extract:
+        *out[0] = *in_planes_[i * max_op_args * 3 + static_cast<std::size_t>(instr.immediate[0])];
+        break;
+      case IrOpKind::begin_region:
+      case IrOpKind::end_region:
+        break;  // both branches are evaluated; the joining `if` takes the hull
+    }
+  }
+}
+
+void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
+  execute(/*uniform_pass=*/false, box);
+  const OutputLayout& layout = program_->outputs_;
+  for (const IrOutput& output : program_->ir_.outputs)
+    for (int c = 0; c < component_count(output.type); ++c) {
+      const Interval value = registers_[static_cast<std::size_t>(output.value) * 3 + static_cast<std::size_t>(c)];
+      outputs[layout.plane(output.id, c)] = lanes::is_finite(value) ? value : lanes::everything();
+    }
+}
+
+}  // namespace shadetree

@@ -1,0 +1,78 @@
+// A graph's program evaluated over a box of its varying globals: for each
+// output plane, an interval enclosing every value the lane backends
+// compute for a sample in the box (every op's interval form,
+// interp/interval_kernels.h). The volume ray marcher is meant to skip
+// bricks whose density's upper bound is <= 0.
+//
+// Conditional regions are not narrowed: both branches are evaluated over
+// the whole box, and the `if` that joins them takes their hull where its
+// condition is uncertain. An enclosure with a NaN or infinite endpoint is
+// returned as [-inf, +inf] (nothing is known there).
+//
+// As with kernels, an IntervalProgram is shared and a binding belongs to
+// one thread; evaluate() allocates nothing.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "interp/interval_kernels.h"
+#include "ir/kernel.h"
+
+namespace shadetree {
+
+// A box of the varying globals: one interval per input plane, in the
+// order of SampleInputs. Planes left unset are unknown ([-inf, +inf]).
+struct SampleBox {
+  lanes::Interval planes[varying_plane_count];
+
+  SampleBox();
+  void set(GlobalId id, lanes::Interval value, int component = 0) { planes[global_def(id).first + component] = value; }
+};
+
+class BoundIntervalProgram;
+
+class IntervalProgram {
+ public:
+  explicit IntervalProgram(ShadeIR ir);
+
+  const ShadeIR& ir() const { return ir_; }
+  const OutputLayout& outputs() const { return outputs_; }
+
+  // Params and uniform globals, as Kernel::bind: the uniform values are
+  // computed once, as points.
+  BoundIntervalProgram bind(const float* params, const UniformInputs& uniforms) const;
+
+ private:
+  friend class BoundIntervalProgram;
+  ShadeIR ir_;
+  OutputLayout outputs_;
+  std::vector<interp::IntervalKernel> kernels_;
+  std::vector<OpConstants> constants_;
+};
+
+class BoundIntervalProgram {
+ public:
+  // Movable, not copyable: the planes point into the registers.
+  BoundIntervalProgram(BoundIntervalProgram&&) = default;
+  BoundIntervalProgram(const BoundIntervalProgram&) = delete;
+  BoundIntervalProgram& operator=(const BoundIntervalProgram&) = delete;
+
+  // outputs[p] for each plane p of the layout (outputs().plane_count);
+  // the planes of outputs the program does not provide are left alone.
+  void evaluate(const SampleBox& box, lanes::Interval* outputs);
+
+ private:
+  friend class IntervalProgram;
+  BoundIntervalProgram(const IntervalProgram& program, const float* params, const UniformInputs& uniforms);
+  void execute(bool uniform_pass, const SampleBox& box);
+
+  const IntervalProgram* program_;
+  std::vector<lanes::Interval> registers_;           // per instruction: 3 components
+  std::vector<const lanes::Interval*> in_planes_;    // per instruction: max_op_args x 3
+  std::vector<lanes::Interval*> out_planes_;         // per instruction: 3
+  const float* params_ = nullptr;                    // during binding only
+  UniformInputs uniforms_;
+};
+
+}  // namespace shadetree

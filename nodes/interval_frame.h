@@ -1,0 +1,30 @@
+// The op ABI over intervals (see nodes/op_frame.h): a frame whose lanes
+// are intervals, one per component of each argument and of the result.
+// Through it an op's generic `evaluate` computes an enclosure of its lane
+// form over a box of its arguments (nodes/lane_interval.h); an op for
+// which that cannot be right states its own `evaluate_interval`.
+//
+// Including this header brings every interval form in: the lane
+// primitives and the overloads of the semantic functions that compute in
+// bits, which the generic semantics reach by argument-dependent lookup.
+#pragma once
+
+#include "nodes/lane_interval.h"
+#include "nodes/op_frame.h"
+#include "nodes/semantics/noise_intervals.h"
+#include "nodes/semantics/transcendental_intervals.h"
+
+namespace shadetree {
+
+// in_planes[3a + c] is component c of argument a (a scalar's one interval
+// repeated), out_planes[c] of the result.
+struct IntervalFrame : FrameConstants {
+  using Lane = lanes::Interval;
+  const lanes::Interval* const* in_planes;
+  lanes::Interval* const* out_planes;
+
+  lanes::Interval in(int a, int c = 0) const { return *in_planes[3 * a + c]; }
+  lanes::Interval& out(int c = 0) const { return *out_planes[c]; }
+};
+
+}  // namespace shadetree

@@ -1,0 +1,129 @@
+// Interval forms of the lattice functions (noise.h, cellular.h), which
+// hash cells in bits and so cannot be instantiated over intervals. They
+// are overloads in the namespace of Interval: noise, pnoise, vnoise,
+// turbulence, fbm and their periodic twins reach noise_on_axes, and
+// cellular and pcellular reach cellular_on_axes, by argument-dependent
+// lookup, so those ops need no interval form of their own.
+#pragma once
+
+#include <cmath>
+
+#include "nodes/lane_interval.h"
+#include "nodes/noise_tables.h"
+#include "nodes/semantics/cellular.h"
+#include "nodes/semantics/noise.h"
+
+namespace shadetree::lanes {
+
+// The proven range of noise. A knot's term is w(u) w(v) w(w) (g . d) with
+// g a unit vector (noise_tables.h) and d its offset, and the weights W_k of
+// the 8 knots sum to 1 (w(t) + w(1 - t) = 1), so by Cauchy-Schwarz and
+// Jensen |noise| <= sum W_k |d_k| <= sqrt(sum W_k |d_k|^2) = sqrt(3 q),
+// where q(t) = w(t) t^2 + w(1 - t) (1 - t)^2 <= 1/4 on [0, 1]
+// (tests/interval_program_test.cpp checks q): |noise| <= sqrt(3) / 2.
+inline constexpr float noise_bound = 0.8660254f;
+// The lane form's rounding: some 40 operations on values below 2.
+inline constexpr float lattice_rounding_margin = 1e-4f;
+// Boxes over more cells than this are bounded by the proven range alone.
+inline constexpr int max_enclosed_noise_cells = 64;
+// Beyond this, cells are not enumerated (a float step may exceed a cell).
+inline constexpr float max_enclosed_noise_coordinate = 8388608.0f;
+
+// w over t in [lo, hi] (lo and hi of one sign): w decreases in |t| on [0, 1].
+inline Interval noise_weight_over(Interval t) {
+  const float near = t.lo >= 0.0f ? t.lo : -t.hi, far = t.lo >= 0.0f ? t.hi : -t.lo;
+  return {semantics::noise_weight(far), semantics::noise_weight(near)};
+}
+
+// [-bound, bound] (with the lane form's rounding) where p is finite, else
+// everything: a lattice function of an infinite coordinate is NaN.
+inline Interval lattice_range(Interval x, Interval y, Interval z, float bound) {
+  if (!is_finite(x) || !is_finite(y) || !is_finite(z)) return everything();
+  return {-bound - lattice_rounding_margin, bound + lattice_rounding_margin};
+}
+
+// Noise over the box, cell by cell: within a cell each knot's gradient is
+// known, its weights are monotone in the offsets and its slope linear in
+// them. `cell_axis(cell, axis)` gives the float axis a cell hashes with.
+template <class CellAxis>
+Interval noise_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, CellAxis cell_axis) {
+  const Interval range = lattice_range(x, y, z, noise_bound);
+  if (is_everything(range)) return range;
+  const Interval box[3] = {x, y, z};
+  float first[3];
+  int count[3];
+  for (int a = 0; a < 3; ++a) {
+    if (std::fabs(box[a].lo) >= max_enclosed_noise_coordinate || std::fabs(box[a].hi) >= max_enclosed_noise_coordinate)
+      return range;
+    first[a] = std::floor(box[a].lo);
+    count[a] = static_cast<int>(std::floor(box[a].hi) - first[a]) + 1;
+    if (count[a] > max_enclosed_noise_cells) return range;
+  }
+  if (count[0] * count[1] * count[2] > max_enclosed_noise_cells) return range;
+  Interval result{infinity, -infinity};
+  for (int k = 0; k < count[2]; ++k)
+    for (int j = 0; j < count[1]; ++j)
+      for (int i = 0; i < count[0]; ++i) {
+        const float corner[3] = {first[0] + float(i), first[1] + float(j), first[2] + float(k)};
+        Interval fraction[3];  // the box's part of this cell, as offsets from its corner (exact)
+        for (int a = 0; a < 3; ++a)
+          fraction[a] = {std::max(box[a].lo, corner[a]) - corner[a], std::min(box[a].hi, corner[a] + 1.0f) - corner[a]};
+        Interval sum = 0.0f;
+        // At the corner itself each knot's offsets are minus its lattice step.
+        semantics::for_each_noise_knot(
+            tables, corner[0], corner[1], corner[2], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
+            cell_axis(corner[2], 2), [&](auto slot, float du, float dv, float dw) {
+              const Interval u = fraction[0] + du, v = fraction[1] + dv, w = fraction[2] + dw;
+              const Interval slope = u * tables.hashed_gradient_x[slot] + v * tables.hashed_gradient_y[slot] +
+                                     w * tables.hashed_gradient_z[slot];
+              sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(w) * slope;
+            });
+        result = hull(result, sum);
+      }
+  return meet(widened(result, lattice_rounding_margin), range);
+}
+
+inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z,
+                              const semantics::LatticeAxis<Interval>&, const semantics::LatticeAxis<Interval>&,
+                              const semantics::LatticeAxis<Interval>&) {
+  return noise_over_cells(tables, x, y, z, [](float cell, int) { return semantics::lattice_axis(cell); });
+}
+
+// Periods that differ over the box are bounded by the proven range alone.
+inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z,
+                              const semantics::PeriodicAxis<Interval>& ax, const semantics::PeriodicAxis<Interval>& ay,
+                              const semantics::PeriodicAxis<Interval>& az) {
+  if (!is_point(ax.period) || !is_point(ay.period) || !is_point(az.period) || !is_finite(ax.period) ||
+      !is_finite(ay.period) || !is_finite(az.period))
+    return lattice_range(x, y, z, noise_bound);
+  const float period[3] = {ax.period.lo, ay.period.lo, az.period.lo};
+  return noise_over_cells(tables, x, y, z,
+                          [&](float cell, int axis) { return semantics::periodic_axis(cell, period[axis]); });
+}
+
+// F1 and F2 over a box: the nearest feature point lies in p's own cell
+// (F1 <= sqrt(3)), the second nearest no further than the point of a
+// face neighbour (F2 <= sqrt(2^2 + 1 + 1)).
+inline constexpr float cellular_nearest_bound = 1.7320508f;
+inline constexpr float cellular_second_bound = 2.4494897f;
+
+template <class Axis>
+semantics::CellularDistances<Interval> cellular_on_axes(const NoiseTables&, Interval x, Interval y, Interval z,
+                                                        Interval, const Axis&, const Axis&, const Axis&) {
+  if (is_everything(lattice_range(x, y, z, 0.0f))) return {everything(), everything()};
+  return {{0.0f, cellular_nearest_bound + lattice_rounding_margin},
+          {0.0f, cellular_second_bound + lattice_rounding_margin}};
+}
+
+// The gradient of noise, per component: the weights' derivatives are at
+// most 3/2 and sum, over the knots, to at most 3 along each axis, times
+// |g . d| <= sqrt(3), plus sum W_k |g| <= 1 (dnoise's own interval form).
+inline constexpr float noise_derivative_bound = 6.1961524f;
+
+// Improved noise: Perlin 2002's gradients are edge vectors of length
+// sqrt(2), its lerp weights (1 - f, f) sum to 1 and
+// (1 - f(t)) t^2 + f(t) (1 - t)^2 <= 1/4 too (tested), so as for noise,
+// |noise_improved| <= sqrt(2) sqrt(3/4) (its own interval form).
+inline constexpr float improved_noise_bound = 1.2247449f;
+
+}  // namespace shadetree::lanes
