@@ -222,7 +222,12 @@ auto table_hull(const T* table, IntervalInt index) {
   return std::pair{lo, hi};
 }
 
+// Beyond this many entries a float table's hull is not searched (an image
+// or a distance grid over a box may span millions): nothing is known.
+inline constexpr std::int32_t max_hull_entries = 256;
+
 inline Interval gather(const float* table, IntervalInt index) {
+  if (index.hi - index.lo >= max_hull_entries) return everything();
   const auto [lo, hi] = table_hull(table, index);
   return {lo, hi};
 }

@@ -35,14 +35,35 @@ float segment_depth(float opacity, float length, float reference_step) {
                          : -std::log1p(-opacity) * (length / reference_step);
 }
 
-// One light ray of the grid being marched: values k of its row are the
-// optical depth at depth first + k spacing.
+// One light ray of the grid being marched: value k of its row is the
+// optical depth at depth first + k spacing; segment k runs from value k to
+// value k + 1, where it crosses the bounds, and is sampled at its middle.
 struct LightRay {
   float* values = nullptr;
+  int count = 0;  // of values
   glm::vec3 start{0.0f}, direction{0.0f};
+  float first = 0.0f, spacing = 0.0f;
   float near = 0.0f, far = 0.0f;  // where it crosses the bounds
-  int k = 0;                      // its next segment, from value k to value k + 1
+  int k = 0;                      // its next segment
   float optical_depth = 0.0f;
+  bool done = false;
+  float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
+
+  float begin() const { return std::max(first + static_cast<float>(k) * spacing, near); }
+  float end() const { return std::min(first + static_cast<float>(k + 1) * spacing, far); }
+  float middle() const { return 0.5f * (begin() + end()); }
+
+  // Past segment k, having gained `depth`, stopped at `spent`: value k + 1
+  // is the depth reached, and every value after it too once the ray is
+  // done (past the bounds or spent).
+  void advance(float depth, float spent) {
+    const float reached = end();
+    optical_depth = std::min(optical_depth + depth, spent);
+    if (optical_depth >= spent - 1.0f) optical_depth = spent;
+    ++k;
+    done = k + 1 >= count || reached >= far || optical_depth == spent;
+    std::fill(values + k, done ? values + count : values + k + 1, optical_depth);
+  }
 };
 
 }  // namespace
@@ -106,7 +127,7 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
   grid.termination_ = spec.termination;
   grid.spent_depth_ = spec.termination > 0.0f ? 1.0f - std::log(spec.termination) : max_optical_depth;
 
-  std::atomic<long> samples{0};
+  std::atomic<long> samples{0}, skipped{0};
   const int depth_count = grid.counts_[2];
   Status marched = for_each_tile(
       grid.counts_[0], grid.counts_[1], rays_per_side, spec.threads,
@@ -124,24 +145,38 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
             ray.near = span->near;
             ray.far = span->far;
             ray.values = grid.values_.data() + (static_cast<std::size_t>(j) * grid.counts_[0] + i) * depth_count;
-            ray.k = std::clamp(static_cast<int>(std::floor((ray.near - grid.first_.z) / grid.spacing_.z)), 0,
-                               depth_count - 1);
+            ray.count = depth_count;
+            ray.first = grid.first_.z;
+            ray.spacing = grid.spacing_.z;
+            ray.k = std::clamp(static_cast<int>(std::floor((ray.near - ray.first) / ray.spacing)), 0, depth_count - 1);
             rays.push_back(ray);
           }
         std::vector<LightRay*> live;
         for (LightRay& ray : rays) live.push_back(&ray);
         std::vector<glm::vec3> points, directions;
         std::vector<float> opacities;
-        long tile_samples = 0;
+        long tile_samples = 0, tile_skipped = 0;
         while (!live.empty()) {
-          // Segment k of a ray: depths [first + k spacing, first + (k + 1)
-          // spacing] where they cross the bounds, sampled at its middle.
+          // Segments sampled in empty space would gain no depth.
+          if (spec.occupancy) {
+            for (LightRay* ray : live) {
+              if (ray->middle() < ray->occupied_until) continue;
+              const Clearance clearance =
+                  spec.occupancy->next_occupied(ray->start, ray->direction, ray->middle(), ray->far);
+              ray->occupied_until = clearance.until;
+              while (!ray->done && ray->middle() < clearance.from) {
+                ray->advance(0.0f, grid.spent_depth_);
+                ++tile_skipped;
+              }
+            }
+            live.erase(std::remove_if(live.begin(), live.end(), [](const LightRay* ray) { return ray->done; }),
+                       live.end());
+            if (live.empty()) break;
+          }
           points.clear();
           directions.clear();
           for (const LightRay* ray : live) {
-            const float begin = std::max(grid.first_.z + static_cast<float>(ray->k) * grid.spacing_.z, ray->near);
-            const float end = std::min(grid.first_.z + static_cast<float>(ray->k + 1) * grid.spacing_.z, ray->far);
-            points.push_back(ray->start + 0.5f * (begin + end) * ray->direction);
+            points.push_back(ray->start + ray->middle() * ray->direction);
             directions.push_back(-ray->direction);
           }
           opacities.resize(points.size());
@@ -149,32 +184,20 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
           tile_samples += static_cast<long>(points.size());
           for (std::size_t r = 0; r < live.size(); ++r) {
             LightRay& ray = *live[r];
-            const float begin = std::max(grid.first_.z + static_cast<float>(ray.k) * grid.spacing_.z, ray.near);
-            const float end = std::min(grid.first_.z + static_cast<float>(ray.k + 1) * grid.spacing_.z, ray.far);
-            ray.optical_depth = std::min(
-                ray.optical_depth + segment_depth(opacities[r], std::max(end - begin, 0.0f), spec.reference_step),
-                grid.spent_depth_);
-            ++ray.k;
-            const bool spent = ray.optical_depth >= grid.spent_depth_ - 1.0f;
-            if (spent) ray.optical_depth = grid.spent_depth_;
-            // The rest of the row keeps what the light has left here.
-            const bool past = ray.k + 1 >= depth_count || end >= ray.far || spent;
-            std::fill(ray.values + ray.k, past ? ray.values + depth_count : ray.values + ray.k + 1, ray.optical_depth);
+            ray.advance(segment_depth(opacities[r], std::max(ray.end() - ray.begin(), 0.0f), spec.reference_step),
+                        grid.spent_depth_);
           }
-          live.erase(std::remove_if(live.begin(), live.end(),
-                                    [&](const LightRay* ray) {
-                                      const float next = grid.first_.z + static_cast<float>(ray->k) * grid.spacing_.z;
-                                      return ray->k + 1 >= depth_count || next >= ray->far ||
-                                             ray->optical_depth == grid.spent_depth_;
-                                    }),
+          live.erase(std::remove_if(live.begin(), live.end(), [](const LightRay* ray) { return ray->done; }),
                      live.end());
         }
+        skipped += tile_skipped;
         samples += tile_samples;
         return tile_samples;
       },
       {}, spec.cancel);
   if (!marched) return marched.error();
   grid.samples_ = samples;
+  grid.skipped_samples_ = skipped;
   return std::optional<TransmittanceGrid>(std::move(grid));
 }
 

@@ -26,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include "graph/diagnostic.h"
+#include "render/occupancy_grid.h"
 #include "scene/scene.h"
 
 namespace shadetree {
@@ -45,6 +46,7 @@ struct TransmittanceGridSpec {
   std::size_t max_values = 0;   // the grid's bound; the spacing grows to fit it
   int threads = 0;
   const std::atomic<bool>* cancel = nullptr;
+  const OccupancyGrid* occupancy = nullptr;  // if set, light rays step over the empty space it finds
 };
 
 // Lookups between light rays whose transmittances differ by more than
@@ -73,6 +75,7 @@ class TransmittanceGrid {
   float spacing() const { return world_spacing_; }
   std::size_t bytes() const { return values_.size() * sizeof(float); }
   long samples() const { return samples_; }  // opacities the build sampled
+  long skipped_samples() const { return skipped_samples_; }  // in empty space
 
  private:
   // Light space: a light ray is (u, v); a point on it is at distance w from
@@ -95,7 +98,7 @@ class TransmittanceGrid {
   std::vector<float> values_;  // optical depth; w fastest, then u, then v
   float spent_depth_ = 0.0f;   // where a ray's march stopped: its light is spent
   float termination_ = 0.0f;
-  long samples_ = 0;
+  long samples_ = 0, skipped_samples_ = 0;
 };
 
 }  // namespace shadetree

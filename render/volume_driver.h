@@ -42,6 +42,7 @@ struct VolumeRenderOptions {
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
   ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
+  bool skip_empty_space = true;  // where the graph's interval bounds say so (render/occupancy_grid.h)
   float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
@@ -63,6 +64,9 @@ struct VolumeRenderStats {
   long shadow_lookups = 0;    // of those grids, instead of shadow rays
   std::size_t grid_bytes = 0;
   double grid_seconds = 0;    // wall time of filling the grids, before the march
+  long skipped_samples = 0;   // of primary, shadow and grid rays, in empty space
+  double empty_fraction = 0;  // of the bounds, by the interval bounds
+  double occupancy_seconds = 0;  // wall time of bounding the graph over the bounds' bricks
   long kernel_calls = 0;
   long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)
 

@@ -4,6 +4,8 @@
 // everything.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <cmath>
 #include <functional>
 #include <random>
@@ -132,6 +134,9 @@ TEST(LaneInterval, GatherTakesTheHullOfTheIndexRange) {
   const Interval all = lanes::gather(table, lanes::IntervalInt{1, 3});
   EXPECT_EQ(all.lo, -1.0f);
   EXPECT_EQ(all.hi, 4.0f);
+  // A range over a large table (an image, a distance grid) is not searched.
+  const std::vector<float> large(lanes::max_hull_entries + 1, 0.5f);
+  EXPECT_TRUE(lanes::is_everything(lanes::gather(large.data(), lanes::IntervalInt{0, lanes::max_hull_entries})));
 }
 
 // The premise of noise's and improved noise's proven ranges

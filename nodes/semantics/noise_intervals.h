@@ -25,7 +25,7 @@ inline constexpr float noise_bound = 0.8660254f;
 // The lane form's rounding: some 40 operations on values below 2.
 inline constexpr float lattice_rounding_margin = 1e-4f;
 // Boxes over more cells than this are bounded by the proven range alone.
-inline constexpr int max_enclosed_noise_cells = 64;
+inline constexpr int max_enclosed_noise_cells = 8;
 // Beyond this, cells are not enumerated (a float step may exceed a cell).
 inline constexpr float max_enclosed_noise_coordinate = 8388608.0f;
 

@@ -1,0 +1,138 @@
+#include "render/occupancy_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/common.hpp>
+
+#include "schedule/image_tiles.h"
+
+namespace shadetree {
+
+Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, const glm::vec3& hi,
+                                                          const BoxOccupancy& occupied, double least_empty,
+                                                          int threads, const std::atomic<bool>* cancel) {
+  OccupancyGrid grid;
+  grid.lo_ = lo;
+  grid.hi_ = hi;
+  grid.cell_size_ = (hi - lo) / static_cast<float>(cells_per_side);
+  grid.cells_per_unit_ = 1.0f / grid.cell_size_;
+  grid.bricks_.assign(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, 1);
+  grid.cells_.assign(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 0);
+  const glm::vec3 brick_size = grid.cell_size_ * static_cast<float>(cells_per_brick_side);
+  // One brick per tile of a bricks_per_side x bricks_per_side^2 image.
+  const auto for_each_brick = [&](const std::function<void(const glm::ivec3&, std::uint8_t&)>& visit) {
+    return for_each_tile(
+        bricks_per_side, bricks_per_side * bricks_per_side, 1, threads,
+        [&](const Tile& tile) -> long {
+          const glm::ivec3 brick(tile.x0, tile.y0 % bricks_per_side, tile.y0 / bricks_per_side);
+          visit(brick, grid.bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side +
+                                    brick.x]);
+          return 1;
+        },
+        {}, cancel);
+  };
+  Status first = for_each_brick([&](const glm::ivec3& brick, std::uint8_t& state) {
+    const glm::vec3 brick_lo = lo + glm::vec3(brick) * brick_size;
+    state = occupied(brick_lo, brick_lo + brick_size) ? 1 : 0;
+  });
+  if (!first) return first.error();
+  const auto empty = static_cast<double>(std::count(grid.bricks_.begin(), grid.bricks_.end(), 0));
+  if (empty < least_empty * static_cast<double>(grid.bricks_.size())) return std::optional<OccupancyGrid>();
+  Status second = for_each_brick([&](const glm::ivec3& brick, std::uint8_t& state) {
+    if (state == 0) return;
+    bool any = false;
+    for (int k = 0; k < cells_per_brick_side; ++k)
+      for (int j = 0; j < cells_per_brick_side; ++j)
+        for (int i = 0; i < cells_per_brick_side; ++i) {
+          const glm::ivec3 cell = brick * cells_per_brick_side + glm::ivec3(i, j, k);
+          const glm::vec3 cell_lo = lo + glm::vec3(cell) * grid.cell_size_;
+          if (!occupied(cell_lo, cell_lo + grid.cell_size_)) continue;
+          grid.cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = 1;
+          any = true;
+        }
+    state = any ? 1 : 0;
+  });
+  if (!second) return second.error();
+  return std::optional<OccupancyGrid>(std::move(grid));
+}
+
+glm::ivec3 OccupancyGrid::cell_of(const glm::vec3& point) const {
+  const glm::ivec3 cell((point - lo_) * cells_per_unit_);  // truncated: the point is inside
+  return glm::min(cell, glm::ivec3(cells_per_side - 1));
+}
+
+bool OccupancyGrid::inside(const glm::vec3& point) const {
+  return point.x >= lo_.x && point.y >= lo_.y && point.z >= lo_.z && point.x <= hi_.x && point.y <= hi_.y &&
+         point.z <= hi_.z;
+}
+
+bool OccupancyGrid::occupied(const glm::vec3& point) const { return !inside(point) || cell_occupied(cell_of(point)); }
+
+float OccupancyGrid::exit_of(const glm::ivec3& cell, int cells, const glm::vec3& origin,
+                             const glm::vec3& direction) const {
+  const glm::vec3 box_lo = lo_ + glm::vec3(cell) * cell_size_;
+  const glm::vec3 box_hi = box_lo + static_cast<float>(cells) * cell_size_;
+  float exit = std::numeric_limits<float>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    if (direction[axis] > 0.0f) exit = std::min(exit, (box_hi[axis] - origin[axis]) / direction[axis]);
+    if (direction[axis] < 0.0f) exit = std::min(exit, (box_lo[axis] - origin[axis]) / direction[axis]);
+  }
+  return exit;
+}
+
+Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3& direction, float t,
+                                       float end) const {
+  // An occupied cell is entered a little before its boundary, and left a
+  // little before its far one: rounding in the caller's origin + t
+  // direction can move a sample by far less than that.
+  const float margin = 1e-3f * std::min({cell_size_.x, cell_size_.y, cell_size_.z});
+  const float start = t;
+  glm::vec3 point = origin + t * direction;
+  if (!inside(point)) return {t, t};  // outside the bounds nothing is known
+  glm::ivec3 cell = cell_of(point);
+  if (cell_occupied(cell)) return {t, exit_of(cell, 1, origin, direction) - margin};
+  // A 3D DDA from cell to cell (Amanatides & Woo 1987), over whole bricks
+  // where a brick is empty.
+  const glm::ivec3 step(direction.x > 0.0f ? 1 : -1, direction.y > 0.0f ? 1 : -1, direction.z > 0.0f ? 1 : -1);
+  // A ray crosses at most 3 cells_per_side cells; the bound keeps a ray
+  // that rounding holds on a boundary from looping (it then samples).
+  for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
+    const glm::ivec3 brick = cell / cells_per_brick_side;
+    if (bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x] == 0) {
+      // Out of the empty brick, a hair past its boundary.
+      const float exit = exit_of(brick * cells_per_brick_side, cells_per_brick_side, origin, direction);
+      if (!(exit < end)) return {end, end};
+      t = std::max(exit, t) + margin * 1e-2f;
+      point = origin + t * direction;
+      if (!inside(point)) return {end, end};
+      cell = cell_of(point);
+      if (cell_occupied(cell)) return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction) - margin};
+      continue;
+    }
+    // Into the neighbour across the face the ray leaves this cell by.
+    int axis = 0;
+    float exit = std::numeric_limits<float>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      if (direction[a] == 0.0f) continue;
+      const float face = lo_[a] + static_cast<float>(cell[a] + (step[a] > 0 ? 1 : 0)) * cell_size_[a];
+      const float at = (face - origin[a]) / direction[a];
+      if (at < exit) {
+        exit = at;
+        axis = a;
+      }
+    }
+    if (!(exit < end)) return {end, end};
+    cell[axis] += step[axis];
+    if (cell[axis] < 0 || cell[axis] >= cells_per_side) return {end, end};
+    if (cell_occupied(cell)) return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction) - margin};
+  }
+  return {t, t};
+}
+
+double OccupancyGrid::empty_fraction() const {
+  return static_cast<double>(std::count(cells_.begin(), cells_.end(), 0)) / static_cast<double>(cells_.size());
+}
+
+}  // namespace shadetree

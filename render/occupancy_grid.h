@@ -1,0 +1,82 @@
+// Empty space of a volume: which parts of its bounds may hold anything a
+// ray would see, so that primary rays, shadow rays and the light rays of
+// the transmittance grids step over the rest without evaluating the
+// graph there.
+//
+// The bounds are cut into bricks (pbrt-v4 keeps such a majorant grid for
+// its media); a brick is empty when the density graph's interval
+// enclosure over the brick's box (interp/interval_program.h) says its
+// opacity is 0 everywhere in it. Bricks whose enclosure is too loose to
+// tell are cut again, 4 x 4 x 4, as Keeter's MPR subdivides its tiles, so
+// that the surface of a solid keeps thin occupied shells around it and
+// the space away from it is empty in large steps.
+//
+// A sample is skipped only where its opacity is certainly 0, and such a
+// sample adds nothing to a ray: skipping changes no pixel.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "graph/diagnostic.h"
+
+namespace shadetree {
+
+// Whether the volume may be visible anywhere in the box [lo, hi]: false
+// only where it certainly is not. Called from worker threads.
+using BoxOccupancy = std::function<bool(const glm::vec3& lo, const glm::vec3& hi)>;
+
+// Where a ray may meet something visible (`from`), and where it leaves the
+// occupied cell it meets there (`until`): the ray need not ask again
+// before `until`.
+struct Clearance {
+  float from = 0.0f, until = 0.0f;
+};
+
+class OccupancyGrid {
+ public:
+  static constexpr int bricks_per_side = 16;     // the first level
+  static constexpr int cells_per_brick_side = 4;  // the second, where the first cannot tell
+  static constexpr int cells_per_side = bricks_per_side * cells_per_brick_side;
+
+  // None when the first level finds less than `least_empty` of the
+  // bounds empty: stepping through the cells would then cost more than
+  // the samples it saves (docs/architecture.md has the measurements).
+  static Result<std::optional<OccupancyGrid>> build(const glm::vec3& lo, const glm::vec3& hi,
+                                                    const BoxOccupancy& occupied, double least_empty, int threads,
+                                                    const std::atomic<bool>* cancel);
+
+  // Whether the point may hold something visible; everything outside the
+  // bounds may.
+  bool occupied(const glm::vec3& point) const;
+
+  // Along the ray origin + t direction from t, the first t where it may
+  // meet something visible: where it enters an occupied cell, a little
+  // before it to be safe, or `end` if it meets none before.
+  Clearance next_occupied(const glm::vec3& origin, const glm::vec3& direction, float t, float end) const;
+
+  double empty_fraction() const;  // of the bounds' volume
+  std::size_t bytes() const { return cells_.size() + bricks_.size(); }
+
+ private:
+  // The cell of the finest level that a point of the bounds lies in.
+  glm::ivec3 cell_of(const glm::vec3& point) const;
+  bool inside(const glm::vec3& point) const;
+  bool cell_occupied(const glm::ivec3& cell) const {
+    return cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] != 0;
+  }
+  // Where the ray leaves the box of `cell`, `cells` cells a side.
+  float exit_of(const glm::ivec3& cell, int cells, const glm::vec3& origin, const glm::vec3& direction) const;
+
+  glm::vec3 lo_{0.0f}, hi_{0.0f}, cell_size_{1.0f}, cells_per_unit_{1.0f};
+  std::vector<std::uint8_t> bricks_;  // per brick: 0 empty, 1 occupied (its cells say where)
+  std::vector<std::uint8_t> cells_;   // per cell of the finest level: 0 empty, 1 occupied
+};
+
+}  // namespace shadetree

@@ -1,0 +1,107 @@
+// The empty space of a volume's bounds: bricks and cells from a box test,
+// and rays stepping over the empty ones without passing an occupied one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "render/occupancy_grid.h"
+
+namespace shadetree {
+namespace {
+
+constexpr float radius = 0.5f;
+
+// Boxes that meet the sphere of `radius` about the origin: an exact box
+// test, as tight as an interval bound can be.
+bool meets_sphere(const glm::vec3& lo, const glm::vec3& hi) {
+  const glm::vec3 nearest = glm::clamp(glm::vec3(0.0f), lo, hi);
+  return glm::length(nearest) <= radius;
+}
+
+OccupancyGrid sphere_grid() {
+  Result<std::optional<OccupancyGrid>> grid =
+      OccupancyGrid::build(glm::vec3(-1.0f), glm::vec3(1.0f), meets_sphere, 0.0, 2, nullptr);
+  EXPECT_TRUE(grid.ok() && grid->has_value());
+  return std::move(**grid);
+}
+
+// The cells that meet the sphere hold about its share of the cube,
+// (4/3 pi 0.5^3) / 8 = 6.5%, plus the shell of cells its surface crosses.
+TEST(OccupancyGrid, TheSpaceAroundASphereIsEmpty) {
+  const OccupancyGrid grid = sphere_grid();
+  const double sphere = 4.0 / 3.0 * M_PI * radius * radius * radius / 8.0;
+  EXPECT_GT(grid.empty_fraction(), 1.0 - 2.0 * sphere);
+  EXPECT_LT(grid.empty_fraction(), 1.0 - sphere);
+  EXPECT_TRUE(grid.occupied(glm::vec3(0.0f)));
+  EXPECT_TRUE(grid.occupied(glm::vec3(0.49f, 0.0f, 0.0f)));
+  EXPECT_FALSE(grid.occupied(glm::vec3(0.9f, 0.9f, 0.9f)));
+  EXPECT_TRUE(grid.occupied(glm::vec3(2.0f, 0.0f, 0.0f))) << "outside the bounds nothing is known";
+}
+
+// A ray through the cube stops before the sphere, and never past a point
+// of it: walked in small steps, every point before the stop lies outside
+// the sphere. A ray that misses the sphere runs to its end.
+TEST(OccupancyGrid, RaysStopBeforeTheSphereAndNeverInsideIt) {
+  const OccupancyGrid grid = sphere_grid();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int hits = 0, misses = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const glm::vec3 origin(unit(random), unit(random), unit(random));
+    glm::vec3 direction(unit(random), unit(random), unit(random));
+    if (glm::length(direction) < 0.1f) continue;
+    direction = glm::normalize(direction);
+    if (glm::length(origin) <= radius) {
+      EXPECT_EQ(grid.next_occupied(origin, direction, 0.0f, 4.0f).from, 0.0f) << "a ray that starts in the sphere";
+      continue;
+    }
+    const float stop = grid.next_occupied(origin, direction, 0.0f, 4.0f).from;
+    for (float t = 0.0f; t < stop; t += 1e-3f)
+      ASSERT_GT(glm::length(origin + t * direction), radius) << "ray " << n << " skipped the sphere at t = " << t;
+    // Where the ray meets the sphere (|o + t d| = r), if it does.
+    const float b = glm::dot(origin, direction), c = glm::dot(origin, origin) - radius * radius;
+    const float discriminant = b * b - c;
+    const bool meets = discriminant >= 0.0f && -b - std::sqrt(discriminant) > 0.0f;
+    if (meets) {
+      ++hits;
+      EXPECT_LE(stop, -b - std::sqrt(discriminant));
+    } else if (!grid.occupied(origin)) {
+      // It steps over empty space, at least out of the cell it starts in.
+      ++misses;
+      EXPECT_GT(stop, 0.0f);
+    }
+  }
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(misses, 100);
+}
+
+// An enclosure that knows nothing leaves nothing empty; a grid that would
+// find too little empty is not built.
+TEST(OccupancyGrid, ABoundThatKnowsNothingSkipsNothing) {
+  const BoxOccupancy everywhere = [](const glm::vec3&, const glm::vec3&) { return true; };
+  Result<std::optional<OccupancyGrid>> grid =
+      OccupancyGrid::build(glm::vec3(0.0f), glm::vec3(1.0f), everywhere, 0.0, 1, nullptr);
+  ASSERT_TRUE(grid.ok() && grid->has_value());
+  EXPECT_EQ((*grid)->empty_fraction(), 0.0);
+  EXPECT_EQ((*grid)->next_occupied(glm::vec3(0.5f), glm::vec3(1.0f, 0.0f, 0.0f), 0.1f, 1.0f).from, 0.1f);
+  grid = OccupancyGrid::build(glm::vec3(0.0f), glm::vec3(1.0f), everywhere, 0.5, 1, nullptr);
+  ASSERT_TRUE(grid.ok());
+  EXPECT_FALSE(grid->has_value());
+  // The sphere leaves about 90% of its first level's bricks empty.
+  grid = OccupancyGrid::build(glm::vec3(-1.0f), glm::vec3(1.0f), meets_sphere, 0.5, 1, nullptr);
+  ASSERT_TRUE(grid.ok());
+  EXPECT_TRUE(grid->has_value());
+}
+
+TEST(OccupancyGrid, CancellingStopsTheBuild) {
+  const std::atomic<bool> cancel{true};
+  Result<std::optional<OccupancyGrid>> grid =
+      OccupancyGrid::build(glm::vec3(0.0f), glm::vec3(1.0f), meets_sphere, 0.0, 1, &cancel);
+  EXPECT_FALSE(grid.ok());
+}
+
+}  // namespace
+}  // namespace shadetree
