@@ -219,6 +219,7 @@ glm::vec3 TransmittanceGrid::ray_start(float u, float v) const {
 std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   if (perspective_ && !(glm::dot(x - origin_, axis_w_) > 0.0f)) return 1.0f;  // behind the light
   const glm::vec3 c = light_space(x);
+  if (!std::isfinite(c.x + c.y + c.z)) return 1.0f;  // a point at no finite place crosses no volume
   float index[3];
   int cell[3];
   float weight[3];

@@ -713,10 +713,14 @@ class VolumeFrames : public FrameRenderer {
                                "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadow rays)",
                                view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
                                stats.shadow_samples);
-    if (options.skip_empty_space)
+    if (stats.empty_fraction > 0.0)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                               ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
                               stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds);
+    else if (options.skip_empty_space)
+      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+                              ", no empty space skipped (less than half the bounds found empty in %.3f s)",
+                              stats.occupancy_seconds);
     if (stats.grid_bytes > 0)
       std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                     ", shadow grids of %.1f MB: %ld samples in %.3f s, %ld lookups", stats.grid_bytes / 1e6,

@@ -123,6 +123,11 @@ Vec3<F> image(const float* rgb, int width, int height, ImageWrap wrap, F u, F v)
     if (wrap == ImageWrap::repeat) {
       first = select(first < 0, I{} + (size - 1), first);
       second = select(second >= size, I{}, second);
+      // No-ops on lanes; over intervals, where select takes the hull of
+      // both sides when it cannot tell, they keep the indices inside the
+      // image, as gather needs.
+      first = max(first, I{});
+      second = min(second, I{} + (size - 1));
     } else {
       first = max(first, I{});
       second = min(second, I{} + (size - 1));
