@@ -6,9 +6,11 @@
 // line, and runs on an index list must equal dense runs. The C++ that
 // emit --cpp writes for it must hold no text of the graph outside quoted
 // comments (for one input in eight): printable ASCII only, and no line
-// continued by a backslash.
+// continued by a backslash. The program's interval form over the box of
+// the samples' inputs must enclose every output the interpreter gave them.
 // Built by
 // scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +19,7 @@
 
 #include "cppgen/emit_cpp.h"
 #include "interp/interpreter.h"
+#include "interp/interval_program.h"
 #include "ir/verify.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
@@ -86,6 +89,33 @@ Result<DistanceGrid> made_up_grid(const std::string&, const std::string&, int) {
   return grid;
 }
 
+// Every output of every sample lies in the enclosure of the program over
+// the box that holds the samples' inputs.
+void check_enclosure(const LoadedGraph& loaded, Samples& samples, const std::vector<std::vector<float>>& reference) {
+  const IntervalProgram program(loaded.ir);
+  BoundIntervalProgram bound = program.bind(loaded.params.data(), samples.uniforms);
+  SampleBox box;
+  for (const GlobalDef& global : globals) {
+    if (global.variability == Variability::uniform) continue;
+    for (int c = 0; c < global.components; ++c) {
+      const float* plane = samples.input.plane(global.id, c);
+      const auto [lo, hi] = std::minmax_element(plane, plane + sample_count);
+      box.set(global.id, {*lo, *hi}, c);
+    }
+  }
+  std::vector<lanes::Interval> enclosures(static_cast<std::size_t>(program.outputs().plane_count));
+  bound.evaluate(box, enclosures.data());
+  const std::vector<int> planes = provided_planes(program.outputs());
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    for (std::size_t i = 0; i < sample_count; ++i) {
+      const lanes::Interval enclosure = enclosures[static_cast<std::size_t>(planes[p])];
+      if (!lanes::encloses(enclosure, reference[p][i]))
+        fault("the interval form of plane " + std::to_string(planes[p]) + " [" + std::to_string(enclosure.lo) + ", " +
+              std::to_string(enclosure.hi) + "] misses sample " + std::to_string(i) + ": " +
+              std::to_string(reference[p][i]));
+    }
+}
+
 }  // namespace
 }  // namespace shadetree
 
@@ -114,6 +144,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   static Samples samples;
   const auto reference = run(*make_interpreted_kernel(loaded->ir), loaded->params, samples);
+  check_enclosure(*loaded, samples, reference);
   if (std::hash<std::string>{}(text) % 8 != 0 || loaded->ir.code.size() > 60) return 0;
   Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 8, JitSettings{false, {}, false, std::nullopt});
   if (!jit) fault("JIT failed: " + jit.error().to_string());

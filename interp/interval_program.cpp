@@ -87,11 +87,15 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
 void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
   execute(/*uniform_pass=*/false, box);
   const OutputLayout& layout = program_->outputs_;
-  for (const IrOutput& output : program_->ir_.outputs)
+  for (const IrOutput& output : program_->ir_.outputs) {
+    // A scalar value read as a vector output repeats, as on the lanes.
+    const int held = component_count(program_->ir_.code[static_cast<std::size_t>(output.value)].type);
     for (int c = 0; c < component_count(output.type); ++c) {
-      const Interval value = registers_[static_cast<std::size_t>(output.value) * 3 + static_cast<std::size_t>(c)];
+      const Interval value =
+          registers_[static_cast<std::size_t>(output.value) * 3 + static_cast<std::size_t>(std::min(c, held - 1))];
       outputs[layout.plane(output.id, c)] = lanes::is_finite(value) ? value : lanes::everything();
     }
+  }
 }
 
 }  // namespace shadetree

@@ -242,6 +242,29 @@ TEST(IntervalProgram, SoftSphereDensityIsZeroOverABoxOutsideIt) {
   EXPECT_EQ(inside.hi, 1.0f);
 }
 
+// Regression (found by the graph fuzzer): a float output read as a colour
+// repeats in every component, as on the lanes; the interval form left the
+// green and blue planes at [0, 0].
+TEST(IntervalProgram, AFloatReadAsAColourOutputRepeats) {
+  Result<LoadedGraph> loaded = compile_graph_text(
+      testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
+                             {"id": "c", "op": "mix", "in": {"a": 4096.0, "b": "s.x", "t": 0.5}})",
+                          R"("color": "c")"),
+      "colour.json");
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  IntervalProgram program(loaded->ir);
+  BoundIntervalProgram bound = program.bind(loaded->params.data(), UniformInputs{});
+  SampleBox box;
+  for (int c = 0; c < 3; ++c) box.set(GlobalId::P, {-3.0f, 4.0f}, c);
+  std::vector<Interval> outputs(static_cast<std::size_t>(program.outputs().plane_count));
+  bound.evaluate(box, outputs.data());
+  for (int c = 0; c < 3; ++c) {
+    const Interval colour = outputs[static_cast<std::size_t>(program.outputs().plane(OutputId::color, c))];
+    EXPECT_EQ(colour.lo, 2046.5f) << c;
+    EXPECT_EQ(colour.hi, 2050.0f) << c;
+  }
+}
+
 TEST(IntervalProgram, NoiseLiesWithinItsProvenRangeAndNarrowsWithTheBox) {
   Result<LoadedGraph> loaded = compile_graph_text(
       testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "n", "op": "noise", "in": {"p": "p"}},
