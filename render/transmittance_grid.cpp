@@ -66,6 +66,17 @@ struct LightRay {
   }
 };
 
+// Segments sampled in empty space would gain no depth: the ray moves past
+// them, keeping its depth.
+long skip_empty_space(LightRay& ray, const OccupancyGrid& occupancy, float spent) {
+  if (ray.middle() < ray.occupied_until) return 0;
+  const Clearance clearance = occupancy.next_occupied(ray.start, ray.direction, ray.middle(), ray.far);
+  ray.occupied_until = clearance.until;
+  long skipped = 0;
+  for (; !ray.done && ray.middle() < clearance.from; ++skipped) ray.advance(0.0f, spent);
+  return skipped;
+}
+
 }  // namespace
 
 Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& light, const glm::vec3& lo,
@@ -73,59 +84,7 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
                                                                  const TransmittanceGridSpec& spec,
                                                                  const OpacitySampler& opacity_at) {
   TransmittanceGrid grid;
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  const float diagonal = glm::length(hi - lo);
-  grid.perspective_ = light.type == LightType::point;
-  const glm::vec3 toward = grid.perspective_ ? centre - light.position : light.direction;
-  if (!(glm::length(toward) > 0.0f)) return std::optional<TransmittanceGrid>();
-  const RayFrame frame = ray_frame(glm::normalize(toward));
-  grid.axis_w_ = frame.along;
-  grid.axis_u_ = frame.across_v;
-  grid.axis_v_ = frame.across_w;
-  grid.origin_ = grid.perspective_ ? light.position : centre - diagonal * grid.axis_w_;
-
-  // The bounds in light space. A point light's rays fan out over the
-  // bounds only if all of them lie well in front of it.
-  glm::vec3 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
-  for (const glm::vec3& corner : corners(lo, hi)) {
-    if (grid.perspective_ && glm::dot(corner - grid.origin_, grid.axis_w_) < 0.1f * diagonal)
-      return std::optional<TransmittanceGrid>();
-    const glm::vec3 c = grid.light_space(corner);
-    low = glm::min(low, c);
-    high = glm::max(high, c);
-  }
-  // Distances from a point light: the nearest point of the bounds is not a corner.
-  if (grid.perspective_) low.z = glm::length(glm::clamp(light.position, lo, hi) - light.position);
-
-  // Lateral spacing in world units at the bounds' centre; angular for a
-  // point light.
-  const float lateral =
-      grid.perspective_ ? spec.spacing / glm::dot(centre - light.position, grid.axis_w_) : spec.spacing;
-  grid.spacing_ = {lateral, lateral, spec.shadow_step};
-  const auto count = [&](int axis) {
-    return std::max(2, static_cast<int>(std::ceil((high[axis] - low[axis]) / grid.spacing_[axis])) + 1);
-  };
-  for (;;) {
-    for (int axis = 0; axis < 3; ++axis) grid.counts_[axis] = count(axis);
-    const double values = static_cast<double>(grid.counts_[0]) * grid.counts_[1] * grid.counts_[2];
-    if (values <= static_cast<double>(spec.max_values)) break;
-    // Over the bound: wider between rays first; coarser along them only
-    // once the rays are few.
-    if (grid.counts_[0] > 2 || grid.counts_[1] > 2) {
-      grid.spacing_.x *= 1.25f;
-      grid.spacing_.y *= 1.25f;
-    } else {
-      grid.spacing_.z *= 1.25f;
-    }
-  }
-  grid.first_ = low;
-  grid.world_spacing_ = spec.spacing * grid.spacing_.x / lateral;
-  grid.values_.assign(static_cast<std::size_t>(grid.counts_[0]) * grid.counts_[1] * grid.counts_[2], 0.0f);
-  // Where the light is spent (transmittance below the termination), the
-  // depth stops a little past it: finite, so that a lookup between a spent
-  // ray and a lit one fades over the rays' spacing as the light does.
-  grid.termination_ = spec.termination;
-  grid.spent_depth_ = spec.termination > 0.0f ? 1.0f - std::log(spec.termination) : max_optical_depth;
+  if (!grid.lay_out(light, lo, hi, spec)) return std::optional<TransmittanceGrid>();
 
   std::atomic<long> samples{0}, skipped{0};
   const int depth_count = grid.counts_[2];
@@ -157,18 +116,8 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
         std::vector<float> opacities;
         long tile_samples = 0, tile_skipped = 0;
         while (!live.empty()) {
-          // Segments sampled in empty space would gain no depth.
           if (spec.occupancy) {
-            for (LightRay* ray : live) {
-              if (ray->middle() < ray->occupied_until) continue;
-              const Clearance clearance =
-                  spec.occupancy->next_occupied(ray->start, ray->direction, ray->middle(), ray->far);
-              ray->occupied_until = clearance.until;
-              while (!ray->done && ray->middle() < clearance.from) {
-                ray->advance(0.0f, grid.spent_depth_);
-                ++tile_skipped;
-              }
-            }
+            for (LightRay* ray : live) tile_skipped += skip_empty_space(*ray, *spec.occupancy, grid.spent_depth_);
             live.erase(std::remove_if(live.begin(), live.end(), [](const LightRay* ray) { return ray->done; }),
                        live.end());
             if (live.empty()) break;
@@ -199,6 +148,64 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
   grid.samples_ = samples;
   grid.skipped_samples_ = skipped;
   return std::optional<TransmittanceGrid>(std::move(grid));
+}
+
+bool TransmittanceGrid::lay_out(const Light& light, const glm::vec3& lo, const glm::vec3& hi,
+                                const TransmittanceGridSpec& spec) {
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float diagonal = glm::length(hi - lo);
+  perspective_ = light.type == LightType::point;
+  const glm::vec3 toward = perspective_ ? centre - light.position : light.direction;
+  if (!(glm::length(toward) > 0.0f)) return false;
+  const RayFrame frame = ray_frame(glm::normalize(toward));
+  axis_w_ = frame.along;
+  axis_u_ = frame.across_v;
+  axis_v_ = frame.across_w;
+  origin_ = perspective_ ? light.position : centre - diagonal * axis_w_;
+
+  // The bounds in light space. A point light's rays fan out over the
+  // bounds only if all of them lie well in front of it.
+  glm::vec3 low(std::numeric_limits<float>::infinity()), high(-std::numeric_limits<float>::infinity());
+  for (const glm::vec3& corner : corners(lo, hi)) {
+    if (perspective_ && glm::dot(corner - origin_, axis_w_) < 0.1f * diagonal)
+      return false;
+    const glm::vec3 c = light_space(corner);
+    low = glm::min(low, c);
+    high = glm::max(high, c);
+  }
+  // Distances from a point light: the nearest point of the bounds is not a corner.
+  if (perspective_) low.z = glm::length(glm::clamp(light.position, lo, hi) - light.position);
+
+  // Lateral spacing in world units at the bounds' centre; angular for a
+  // point light.
+  const float lateral =
+      perspective_ ? spec.spacing / glm::dot(centre - light.position, axis_w_) : spec.spacing;
+  spacing_ = {lateral, lateral, spec.shadow_step};
+  const auto count = [&](int axis) {
+    return std::max(2, static_cast<int>(std::ceil((high[axis] - low[axis]) / spacing_[axis])) + 1);
+  };
+  for (;;) {
+    for (int axis = 0; axis < 3; ++axis) counts_[axis] = count(axis);
+    const double values = static_cast<double>(counts_[0]) * counts_[1] * counts_[2];
+    if (values <= static_cast<double>(spec.max_values)) break;
+    // Over the bound: wider between rays first; coarser along them only
+    // once the rays are few.
+    if (counts_[0] > 2 || counts_[1] > 2) {
+      spacing_.x *= 1.25f;
+      spacing_.y *= 1.25f;
+    } else {
+      spacing_.z *= 1.25f;
+    }
+  }
+  first_ = low;
+  world_spacing_ = spec.spacing * spacing_.x / lateral;
+  values_.assign(static_cast<std::size_t>(counts_[0]) * counts_[1] * counts_[2], 0.0f);
+  // Where the light is spent (transmittance below the termination), the
+  // depth stops a little past it: finite, so that a lookup between a spent
+  // ray and a lit one fades over the rays' spacing as the light does.
+  termination_ = spec.termination;
+  spent_depth_ = spec.termination > 0.0f ? 1.0f - std::log(spec.termination) : max_optical_depth;
+  return true;
 }
 
 glm::vec3 TransmittanceGrid::light_space(const glm::vec3& x) const {

@@ -81,6 +81,9 @@ class TransmittanceGrid {
   // Light space: a light ray is (u, v); a point on it is at distance w from
   // the light (point light) or from the plane through `origin_` across the
   // light (directional light).
+  // The light's frame, the bounds' extent in it and the rays' spacing
+  // within the spec's bound; false for a light that cannot have a grid.
+  bool lay_out(const Light& light, const glm::vec3& lo, const glm::vec3& hi, const TransmittanceGridSpec& spec);
   glm::vec3 light_space(const glm::vec3& x) const;
   glm::vec3 ray_direction(float u, float v) const;
   glm::vec3 ray_start(float u, float v) const;
