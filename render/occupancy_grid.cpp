@@ -94,37 +94,39 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   glm::ivec3 cell = cell_of(point);
   if (cell_occupied(cell)) return {t, exit_of(cell, 1, origin, direction) - margin};
   // A 3D DDA from cell to cell (Amanatides & Woo 1987), over whole bricks
-  // where a brick is empty.
+  // where a brick is empty. The next cell is the current one's (or
+  // brick's) neighbour across the face the ray leaves by, stepped as an
+  // index: a position a hair past the face could round back into the box
+  // when the ray grazes it.
   const glm::ivec3 step(direction.x > 0.0f ? 1 : -1, direction.y > 0.0f ? 1 : -1, direction.z > 0.0f ? 1 : -1);
-  // A ray crosses at most 3 cells_per_side cells; the bound keeps a ray
-  // that rounding holds on a boundary from looping (it then samples).
+  // A ray crosses at most 3 cells_per_side cells; the bound is a guard
+  // (the ray then samples).
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
     const glm::ivec3 brick = cell / cells_per_brick_side;
-    if (bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x] == 0) {
-      // Out of the empty brick, a hair past its boundary.
-      const float exit = exit_of(brick * cells_per_brick_side, cells_per_brick_side, origin, direction);
-      if (!(exit < end)) return {end, end};
-      t = std::max(exit, t) + margin * 1e-2f;
-      point = origin + t * direction;
-      if (!inside(point)) return {end, end};
-      cell = cell_of(point);
-      if (cell_occupied(cell)) return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction) - margin};
-      continue;
-    }
-    // Into the neighbour across the face the ray leaves this cell by.
+    const bool brick_empty =
+        bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x] == 0;
+    const glm::ivec3 box_first = brick_empty ? brick * cells_per_brick_side : cell;
+    const int box_cells = brick_empty ? cells_per_brick_side : 1;
     int axis = 0;
     float exit = std::numeric_limits<float>::infinity();
     for (int a = 0; a < 3; ++a) {
       if (direction[a] == 0.0f) continue;
-      const float face = lo_[a] + static_cast<float>(cell[a] + (step[a] > 0 ? 1 : 0)) * cell_size_[a];
-      const float at = (face - origin[a]) / direction[a];
+      const int face_cell = box_first[a] + (step[a] > 0 ? box_cells : 0);
+      const float at = (lo_[a] + static_cast<float>(face_cell) * cell_size_[a] - origin[a]) / direction[a];
       if (at < exit) {
         exit = at;
         axis = a;
       }
     }
     if (!(exit < end)) return {end, end};
-    cell[axis] += step[axis];
+    t = std::max(exit, t);
+    if (brick_empty) {
+      // Across the brick's face, in the cell the ray reaches there.
+      cell = glm::clamp(cell_of(origin + t * direction), box_first, box_first + (box_cells - 1));
+      cell[axis] = step[axis] > 0 ? box_first[axis] + box_cells : box_first[axis] - 1;
+    } else {
+      cell[axis] += step[axis];
+    }
     if (cell[axis] < 0 || cell[axis] >= cells_per_side) return {end, end};
     if (cell_occupied(cell)) return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction) - margin};
   }
