@@ -70,14 +70,14 @@ bool OccupancyGrid::inside(const glm::vec3& point) const {
 
 bool OccupancyGrid::occupied(const glm::vec3& point) const { return !inside(point) || cell_occupied(cell_of(point)); }
 
-float OccupancyGrid::exit_of(const glm::ivec3& cell, int cells, const glm::vec3& origin,
-                             const glm::vec3& direction) const {
-  const glm::vec3 box_lo = lo_ + glm::vec3(cell) * cell_size_;
-  const glm::vec3 box_hi = box_lo + static_cast<float>(cells) * cell_size_;
-  float exit = std::numeric_limits<float>::infinity();
-  for (int axis = 0; axis < 3; ++axis) {
-    if (direction[axis] > 0.0f) exit = std::min(exit, (box_hi[axis] - origin[axis]) / direction[axis]);
-    if (direction[axis] < 0.0f) exit = std::min(exit, (box_lo[axis] - origin[axis]) / direction[axis]);
+OccupancyGrid::Exit OccupancyGrid::exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin,
+                                            const glm::vec3& direction) const {
+  Exit exit{std::numeric_limits<float>::infinity(), 0};
+  for (int a = 0; a < 3; ++a) {
+    if (direction[a] == 0.0f) continue;
+    const int face = first[a] + (direction[a] > 0.0f ? cells : 0);
+    const float at = (lo_[a] + static_cast<float>(face) * cell_size_[a] - origin[a]) / direction[a];
+    if (at < exit.t) exit = {at, a};
   }
   return exit;
 }
@@ -92,7 +92,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   glm::vec3 point = origin + t * direction;
   if (!inside(point)) return {t, t};  // outside the bounds nothing is known
   glm::ivec3 cell = cell_of(point);
-  if (cell_occupied(cell)) return {t, exit_of(cell, 1, origin, direction) - margin};
+  if (cell_occupied(cell)) return {t, exit_of(cell, 1, origin, direction).t - margin};
   // A 3D DDA from cell to cell (Amanatides & Woo 1987), over whole bricks
   // where a brick is empty. The next cell is the current one's (or
   // brick's) neighbour across the face the ray leaves by, stepped as an
@@ -107,17 +107,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
         bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x] == 0;
     const glm::ivec3 box_first = brick_empty ? brick * cells_per_brick_side : cell;
     const int box_cells = brick_empty ? cells_per_brick_side : 1;
-    int axis = 0;
-    float exit = std::numeric_limits<float>::infinity();
-    for (int a = 0; a < 3; ++a) {
-      if (direction[a] == 0.0f) continue;
-      const int face_cell = box_first[a] + (step[a] > 0 ? box_cells : 0);
-      const float at = (lo_[a] + static_cast<float>(face_cell) * cell_size_[a] - origin[a]) / direction[a];
-      if (at < exit) {
-        exit = at;
-        axis = a;
-      }
-    }
+    const auto [exit, axis] = exit_of(box_first, box_cells, origin, direction);
     if (!(exit < end)) return {end, end};
     t = std::max(exit, t);
     if (brick_empty) {
@@ -128,7 +118,8 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
       cell[axis] += step[axis];
     }
     if (cell[axis] < 0 || cell[axis] >= cells_per_side) return {end, end};
-    if (cell_occupied(cell)) return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction) - margin};
+    if (cell_occupied(cell))
+      return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction).t - margin};
   }
   return {t, t};
 }

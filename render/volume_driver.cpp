@@ -52,11 +52,14 @@ struct MarchingRay {
   std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
 
-  float segment_start() const { return entry + static_cast<float>(segment) * step_length; }
-  float segment_length() const { return std::min(step_length, exit - segment_start()); }
-  float sample_t() const {
-    return segment < 0 ? entry - (1.0f - jitter) * step_length : segment_start() + jitter * segment_length();
+  float segment_start(int k) const { return entry + static_cast<float>(k) * step_length; }
+  float segment_length(int k) const { return std::min(step_length, exit - segment_start(k)); }
+  float sample_t(int k) const {
+    return k < 0 ? entry - (1.0f - jitter) * step_length : segment_start(k) + jitter * segment_length(k);
   }
+  float segment_start() const { return segment_start(segment); }
+  float segment_length() const { return segment_length(segment); }
+  float sample_t() const { return sample_t(segment); }
   glm::vec3 at(float t) const { return origin + t * frame.along; }
 };
 
@@ -107,6 +110,9 @@ struct ShadowRay {
   int segments_left = 0;  // the march's budget: however t rounds, it ends
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
   std::size_t slot = 0;  // in the step's transmittance list
+
+  // Where the sample of the next segment, `step` long but clipped at the end, lies.
+  float sample_t(float step) const { return t + 0.5f * std::min(step, end - t); }
 };
 
 // An opaque object seen at a pixel, through what the volume in front of
@@ -294,11 +300,11 @@ class Marcher {
   // light through (1 - alpha = 1 exactly): the ray steps over them as the
   // march would, one shadow step at a time, without sampling them.
   void skip_empty_space(ShadowRay& ray, TileCounts& counts) const {
-    const auto sample_t = [&] { return ray.t + 0.5f * std::min(shadow_step_, ray.end - ray.t); };
-    if (sample_t() < ray.occupied_until) return;
-    const Clearance clearance = occupancy_->next_occupied(ray.origin, ray.direction, sample_t(), ray.end);
+    if (ray.sample_t(shadow_step_) < ray.occupied_until) return;
+    const Clearance clearance =
+        occupancy_->next_occupied(ray.origin, ray.direction, ray.sample_t(shadow_step_), ray.end);
     ray.occupied_until = clearance.until;
-    while (ray.t < ray.end && ray.segments_left > 0 && sample_t() < clearance.from) {
+    while (ray.t < ray.end && ray.segments_left > 0 && ray.sample_t(shadow_step_) < clearance.from) {
       ray.t += shadow_step_;
       --ray.segments_left;
       ++counts.skipped_samples;
@@ -314,9 +320,8 @@ class Marcher {
     if (ray.segment < 0 || refracts_ || ray.sample_t() < ray.occupied_until) return;
     const Clearance clearance = occupancy_->next_occupied(ray.origin, ray.frame.along, ray.sample_t(), ray.exit);
     ray.occupied_until = clearance.until;
-    MarchingRay next = ray;
-    for (++next.segment; next.segment_start() < ray.exit && next.sample_t() < clearance.from; ++next.segment) {
-      ray.segment = next.segment;
+    while (ray.segment_start(ray.segment + 1) < ray.exit && ray.sample_t(ray.segment + 1) < clearance.from) {
+      ++ray.segment;
       ++counts.skipped_samples;
     }
   }
@@ -421,8 +426,7 @@ class Marcher {
       const std::size_t count = live.size();
       for (std::size_t i = 0; i < count; ++i) {
         const ShadowRay& ray = *live[i];
-        const float length = std::min(shadow_step, ray.end - ray.t);
-        store3(scratch.shadows.inputs, GlobalId::P, i, ray.origin + (ray.t + 0.5f * length) * ray.direction);
+        store3(scratch.shadows.inputs, GlobalId::P, i, ray.origin + ray.sample_t(shadow_step) * ray.direction);
         store3(scratch.shadows.inputs, GlobalId::I, i, ray.direction);
       }
       run(scratch.shadows, count, scratch);
@@ -595,21 +599,28 @@ Result<std::optional<OccupancyGrid>> bound_empty_space(const Kernel& kernel, con
                                         const VolumeRenderOptions& options) {
   const IntervalProgram program(kernel.ir());
   const UniformInputs uniforms = volume_uniforms(frame, step);
-  tbb::enumerable_thread_specific<std::optional<BoundIntervalProgram>> bindings;
+  // Per thread: a binding, and the enclosures of its last box.
+  struct Bounding {
+    std::optional<BoundIntervalProgram> bound;
+    std::vector<lanes::Interval> outputs;
+  };
+  tbb::enumerable_thread_specific<Bounding> threads;
   const OutputLayout& layout = program.outputs();
   const int plane = layout.plane(layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density);
   const BoxOccupancy occupied = [&](const glm::vec3& lo, const glm::vec3& hi) {
-    std::optional<BoundIntervalProgram>& bound = bindings.local();
-    if (!bound) bound.emplace(program.bind(params.data(), uniforms));
+    Bounding& local = threads.local();
+    if (!local.bound) {
+      local.bound.emplace(program.bind(params.data(), uniforms));
+      local.outputs.resize(static_cast<std::size_t>(layout.plane_count));
+    }
     SampleBox box;
     for (int c = 0; c < 3; ++c) {
       box.set(GlobalId::P, {lo[c], hi[c]}, c);
       box.set(GlobalId::I, {-1.0f, 1.0f}, c);
     }
     box.set(GlobalId::filter_width, {step, step});
-    std::vector<lanes::Interval> outputs(static_cast<std::size_t>(layout.plane_count));
-    bound->evaluate(box, outputs.data());
-    return !(outputs[static_cast<std::size_t>(plane)].hi <= 0.0f);
+    local.bound->evaluate(box, local.outputs.data());
+    return !(local.outputs[static_cast<std::size_t>(plane)].hi <= 0.0f);
   };
   const glm::vec3 lo(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]);
   const glm::vec3 hi(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]);
