@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "graph/diagnostic.h"
 
 namespace shadetree {
 
@@ -41,7 +42,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& version) {
     return app.exit(version);
   } catch (const CLI::ParseError& error) {
-    std::fprintf(stderr, "error: %s (see shadetree --help)\n", error.what());
+    // The message echoes what was typed: escaped, it stays one line.
+    std::fprintf(stderr, "error: %s (see shadetree --help)\n", printable(error.what()).c_str());
     return static_cast<int>(ExitStatus::invalid_input);
   }
   try {

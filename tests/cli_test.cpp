@@ -252,9 +252,10 @@ TEST_F(Cli, ShadowModesOfTheRayMarcher) {
                      std::string(options).find("no-shadows") != std::string::npos;
     EXPECT_EQ(run.err.find(", 0 for shadow rays") != std::string::npos, off) << options << ": " << run.err;
   }
-  for (const char* options : {"--shadows sometimes", "--shadows exact --no-shadows"}) {
+  for (const char* options : {"--shadows sometimes", "--shadows exact --no-shadows", "--shadows 'exact\nx'"}) {
     const CommandResult run = shadetree(render + " " + options);
     EXPECT_EQ(run.status, 2) << options << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << options << ": " << run.err;
   }
   const CommandResult texture = shadetree("render " + gallery + "marble.json -o " + out + " --size 8x8 --shadows off");
   EXPECT_EQ(texture.status, 2);
