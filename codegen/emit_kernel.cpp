@@ -12,6 +12,9 @@
 // Varying values are computed inside the loop. A region becomes a branch
 // that skips its blocks when no active lane takes it (ISPC-style masked
 // control flow); inside, all W lanes compute and the `if` selects per lane.
+// A dual value (ir/differentiate.h) takes four vectors per component
+// (value, then its partials with respect to P) and its ops are the op
+// library's dual forms.
 #include "codegen/emit_kernel.h"
 
 #include <algorithm>
@@ -27,8 +30,8 @@
 
 #include "codegen/op_library.h"
 #include "codegen/table_lookups.h"
+#include "nodes/dual_frame.h"
 #include "nodes/noise_tables.h"
-#include "nodes/op_frame.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -170,8 +173,8 @@ class KernelEmitter {
     builder_.SetInsertPoint(entry_);
     registers_.clear();
     for (const IrInstr& instr : ir_.code)
-      registers_.push_back(builder_.CreateAlloca(
-          llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(component_count(instr.type)))));
+      registers_.push_back(
+          builder_.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(stored_components(instr)))));
     return function;
   }
 
@@ -182,29 +185,40 @@ class KernelEmitter {
     return function;
   }
 
-  // Pointer to component c of value v, reading scalars as splatted vectors.
-  llvm::Value* component_pointer(int value, int component) {
+  // Pointer to component c of value v, reading scalars as splatted vectors;
+  // to its part `part` (0: value, 1 to 3: partials) if v is dual.
+  llvm::Value* component_pointer(int value, int component, int part = 0) {
     const int components = component_count(ir_.code[value].type);
     const int c = std::min(component, components - 1);
+    const int index = ir_.code[value].dual ? dual_floats * c + part : c;
     return builder_.CreateConstInBoundsGEP2_32(registers_[value]->getAllocatedType(), registers_[value], 0,
-                                               static_cast<unsigned>(c));
+                                               static_cast<unsigned>(index));
   }
 
-  llvm::Value* load(int value, int component) { return builder_.CreateLoad(vector_, component_pointer(value, component)); }
-
-  void store(int value, int component, llvm::Value* vector) {
-    builder_.CreateStore(vector, component_pointer(value, component));
+  llvm::Value* load(int value, int component, int part = 0) {
+    return builder_.CreateLoad(vector_, component_pointer(value, component, part));
   }
 
-  // A pointer to `components` consecutive vectors holding argument `value`;
-  // a scalar passed where a vector is expected is splatted into a copy.
-  llvm::Value* array_pointer(int value, int components) {
-    if (component_count(ir_.code[value].type) >= components) return component_pointer(value, 0);
+  void store(int value, int component, llvm::Value* vector, int part = 0) {
+    builder_.CreateStore(vector, component_pointer(value, component, part));
+  }
+
+  // A pointer to `components` consecutive vectors holding argument `value`
+  // (duals, for a dual user: `parts` = 4); a scalar passed where a vector is
+  // expected is splatted into a copy, and a value that does not depend on P
+  // gets zero partials in a copy.
+  llvm::Value* array_pointer(int value, int components, int parts) {
+    const bool as_stored = ir_.code[value].dual == (parts > 1);
+    if (as_stored && component_count(ir_.code[value].type) >= components) return component_pointer(value, 0);
     llvm::IRBuilder<> entry_builder(entry_, entry_->begin());
-    auto* copy = entry_builder.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(components)));
+    auto* copy =
+        entry_builder.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(components * parts)));
     for (int c = 0; c < components; ++c)
-      builder_.CreateStore(load(value, c), builder_.CreateConstInBoundsGEP2_32(copy->getAllocatedType(), copy, 0,
-                                                                                static_cast<unsigned>(c)));
+      for (int part = 0; part < parts; ++part)
+        builder_.CreateStore(part > 0 && !ir_.code[value].dual ? llvm::ConstantFP::get(vector_, 0.0)
+                                                               : load(value, c, part),
+                             builder_.CreateConstInBoundsGEP2_32(copy->getAllocatedType(), copy, 0,
+                                                                 static_cast<unsigned>(c * parts + part)));
     return copy;
   }
 
@@ -280,11 +294,18 @@ class KernelEmitter {
               ptr_, builder_.CreateConstInBoundsGEP1_32(ptr_, inputs_, static_cast<unsigned>(global.first + c)));
           llvm::Value* address = builder_.CreateInBoundsGEP(float_, plane, index_);
           store(self, c, builder_.CreateAlignedLoad(vector_, address, llvm::Align(4)));
+          if (!instr.dual) continue;
+          // P's partials: dP_c / dP_k is 1 where k = c.
+          for (int k = 0; k < 3; ++k) store(self, c, llvm::ConstantFP::get(vector_, k == c ? 1.0 : 0.0), 1 + k);
         }
         return success();
       }
       case IrOpKind::extract:
-        store(self, 0, load(instr.args[0], instr.immediate[0]));
+        for (int part = 0; part < (instr.dual ? dual_floats : 1); ++part)
+          store(self, 0, load(instr.args[0], instr.immediate[0], part), part);
+        return success();
+      case IrOpKind::partials:
+        for (int k = 0; k < 3; ++k) store(self, k, load(instr.args[0], 0, 1 + k));
         return success();
       case IrOpKind::begin_region:
       case IrOpKind::end_region:
@@ -299,16 +320,19 @@ class KernelEmitter {
     return builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(float_, base, static_cast<unsigned>(index)));
   }
 
-  // st_<op>_w<W>(result, a0 .. a5, constants): codegen/ops_bitcode.cpp.
+  // st_<op>_w<W>(result, a0 .. a5, constants), st_<op>_dual_w<W> for a
+  // dual: codegen/ops_bitcode.cpp.
   Status emit_op(int self) {
     const IrInstr& instr = ir_.code[self];
-    const std::string symbol = std::string("st_") + op_symbol(instr.op) + "_w" + std::to_string(width_);
+    const std::string symbol =
+        std::string("st_") + op_symbol(instr.op) + (instr.dual ? "_dual" : "") + "_w" + std::to_string(width_);
     llvm::Function* callee = module_.getFunction(symbol);
     if (!callee) return failure("codegen: the op library has no " + symbol);
     std::vector<llvm::Value*> arguments{component_pointer(self, 0)};
     for (int a = 0; a < max_op_args; ++a)
       arguments.push_back(a < instr.arg_count
-                              ? array_pointer(instr.args[a], component_count(argument_type(instr, a)))
+                              ? array_pointer(instr.args[a], component_count(argument_type(instr, a)),
+                                              instr.dual ? dual_floats : 1)
                               : llvm::ConstantPointerNull::get(ptr_));
     arguments.push_back(op_constants(instr));
     builder_.CreateCall(callee, arguments);

@@ -103,6 +103,8 @@ class CppEmitter {
   // Value v in the code of the block: a register of its own, or, for a
   // uniform value, its splatted copy.
   int components(std::int32_t value) const { return component_count(ir_.code[value].type); }
+  // The lanes of value i's register in the block: F, or duals of F.
+  std::string register_type(std::size_t i) const { return ir_.code[i].dual ? "lanes::Dual<F>" : "F"; }
 
   std::string header() const {
     std::ostringstream out;
@@ -136,6 +138,15 @@ class CppEmitter {
         << "  int a = 0;\n"
         << "  for (const F* arg : args) arguments[a++] = arg;\n"
         << "  Op::evaluate(VectorFrame<F>{{&constants}, arguments, result});\n"
+        << "}\n"
+        << "// One dual instruction: its value and gradient with respect to P.\n"
+        << "template <class Op, class F>\n"
+        << "inline void evaluate_dual(lanes::Dual<F>* result, const OpConstants& constants,\n"
+        << "                          std::initializer_list<const lanes::Dual<F>*> args) {\n"
+        << "  const lanes::Dual<F>* arguments[max_op_args] = {};\n"
+        << "  int a = 0;\n"
+        << "  for (const lanes::Dual<F>* arg : args) arguments[a++] = arg;\n"
+        << "  Op::evaluate(DualVectorFrame<F>{{&constants}, arguments, result});\n"
         << "}\n"
         << "}  // namespace shadetree\n"
         << "}  // namespace shadetree_emitted\n" << library_end << "\n";
@@ -261,9 +272,19 @@ class CppEmitter {
       const std::int32_t value = instr.args[a];
       std::string name = (uniform_pass ? "u." : "") + value_name(value);
       const int wanted = component_count(argument_type(instr, a));
-      if (components(value) < wanted) {
+      if (instr.dual && !ir_.code[value].dual) {
+        // A value that does not depend on P, read with zero partials.
+        const std::string lifted = "dual" + std::to_string(i) + "_" + std::to_string(a);
+        out << indent << "const lanes::Dual<F> " << lifted << "[" << wanted << "] = {"
+            << list(std::vector<int>(static_cast<std::size_t>(wanted), 0),
+                    [&, c = 0](int) mutable {
+                      return "lanes::Dual<F>(" + name + "[" + std::to_string(std::min(c++, components(value) - 1)) + "])";
+                    })
+            << "};\n";
+        name = lifted;
+      } else if (components(value) < wanted) {
         const std::string splat = "splat" + std::to_string(i) + "_" + std::to_string(a);
-        out << indent << "const " << lane << " " << splat << "[" << wanted << "] = {"
+        out << indent << "const " << (instr.dual ? "lanes::Dual<F>" : lane) << " " << splat << "[" << wanted << "] = {"
             << list(std::vector<int>(static_cast<std::size_t>(wanted), 0), [&](int) { return name + "[0]"; })
             << "};\n";
         name = splat;
@@ -271,7 +292,7 @@ class CppEmitter {
       args.push_back(name);
     }
     const std::string result = (uniform_pass ? "u." : "") + value_name(static_cast<std::int32_t>(i));
-    out << indent << "evaluate<ops::" << op_symbol(instr.op) << ">(" << result << ", k" << i << ", {"
+    out << indent << (instr.dual ? "evaluate_dual<ops::" : "evaluate<ops::") << op_symbol(instr.op) << ">(" << result << ", k" << i << ", {"
         << list(args, [](const std::string& v) { return v; }) << "});\n";
     return out.str();
   }
@@ -285,8 +306,10 @@ class CppEmitter {
       case IrOpKind::param: text += "param"; break;
       case IrOpKind::global: text += std::string(global_def(static_cast<GlobalId>(instr.immediate[0])).name); break;
       case IrOpKind::extract: text += "component " + std::to_string(instr.immediate[0]); break;
+      case IrOpKind::partials: text += "gradient"; break;
       default: break;
     }
+    if (instr.dual) text += ", with its gradient";
     if (!instr.source.empty()) text += ", node " + quoted_text(instr.source);
     return text + "\n";
   }
@@ -322,14 +345,22 @@ class CppEmitter {
           const std::string field =
               "inputs." + std::string(global.name) + (global.components > 1 ? "[" + std::to_string(c) + "]" : "");
           value = uniform_pass ? field : "lanes::load<F>(" + field + " + i)";
+          if (instr.dual) {  // P, whose partials dP_c / dP_k are 1 where k = c
+            auto unit = [&](int k) { return std::string(k == c ? "lanes::splat<F>(1.0f)" : "lanes::splat<F>(0.0f)"); };
+            value = "lanes::Dual<F>(" + value + ", " + unit(0) + ", " + unit(1) + ", " + unit(2) + ")";
+          }
           break;
         }
         case IrOpKind::extract:
           value = (uniform_pass ? "u." : "") + value_name(instr.args[0]) + "[" + std::to_string(instr.immediate[0]) + "]";
           break;
+        case IrOpKind::partials:
+          value = value_name(instr.args[0]) + "[0].d" + "xyz"[c];
+          break;
         default: break;
       }
-      if (!uniform_pass && instr.kind != IrOpKind::global && instr.kind != IrOpKind::extract)
+      if (!uniform_pass && instr.kind != IrOpKind::global && instr.kind != IrOpKind::extract &&
+          instr.kind != IrOpKind::partials)
         value = "lanes::splat<F>(" + value + ")";
       values.push_back(value);
     }
@@ -375,7 +406,8 @@ class CppEmitter {
       if (instr.kind == IrOpKind::begin_region) ++depth;
       else if (instr.kind == IrOpKind::end_region) --depth;
       else if (depth > 0 && !instr.uniform)
-        out << "  F " << value_name(static_cast<std::int32_t>(i)) << "[" << components(static_cast<std::int32_t>(i))
+        out << "  " << register_type(i) << " " << value_name(static_cast<std::int32_t>(i)) << "["
+            << components(static_cast<std::int32_t>(i))
             << "] = {};\n";
     }
     depth = 0;
@@ -398,14 +430,15 @@ class CppEmitter {
       if (instr.uniform) continue;
       out << indent << comment(i).substr(2);
       const std::string name = value_name(static_cast<std::int32_t>(i));
-      const std::string declaration = depth > 0 ? "" : "F " + name + "[" + std::to_string(components(static_cast<std::int32_t>(i))) + "]";
+      const std::string declaration =
+          depth > 0 ? "" : register_type(i) + " " + name + "[" + std::to_string(components(static_cast<std::int32_t>(i))) + "]";
       if (instr.kind == IrOpKind::op) {
         if (depth == 0) out << indent << declaration << ";\n";
         out << op_statement(i, "F", indent, false);
       } else if (depth == 0) {
         out << indent << simple_statement(i, "F", declaration, false).substr(2);
       } else {
-        std::string statement = simple_statement(i, "F", "const F value[]", false);
+        std::string statement = simple_statement(i, "F", "const " + register_type(i) + " value[]", false);
         out << indent << "{\n" << indent << statement << indent << "  std::copy(value, value + "
             << components(static_cast<std::int32_t>(i)) << ", " << name << ");\n" << indent << "}\n";
       }

@@ -4,13 +4,15 @@
 // that depends only on them), and they stay in their registers for every
 // run of the binding; runs compute the varying values block by block.
 // Conditional regions narrow the lane list to the samples that take the
-// branch and skip the region when none does.
+// branch and skip the region when none does. A dual value (see
+// ir/differentiate.h) takes four planes per component: value and partials.
 #include "interp/interpreter.h"
 
 #include <algorithm>
 #include <cstring>
 #include <vector>
 
+#include "interp/dual_kernels.h"
 #include "interp/exec_context.h"
 #include "interp/op_constants.h"
 
@@ -32,11 +34,11 @@ class InterpretedKernel final : public Kernel {
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       register_offset_[i] = offset;
-      offset += static_cast<std::size_t>(component_count(instr.type) * block);
+      offset += static_cast<std::size_t>(stored_components(instr) * block);
       if (instr.kind == IrOpKind::begin_region) max_region_depth_ = std::max(max_region_depth_, ++depth);
       if (instr.kind == IrOpKind::end_region) --depth;
       if (instr.kind != IrOpKind::op) continue;
-      kernels_[i] = interp::op_kernel(instr.op);
+      kernels_[i] = instr.dual ? interp::dual_op_kernel(instr.op) : interp::op_kernel(instr.op);
       constants_[i] = interp::op_constants(ir_, instr);
     }
     register_floats_ = offset;
@@ -46,10 +48,13 @@ class InterpretedKernel final : public Kernel {
 
   std::unique_ptr<BoundKernel> bind(const float* params, const UniformInputs& uniforms) const override;
 
-  // The first plane of value v's component c (a scalar's one plane for every c).
-  std::size_t plane_offset(std::int32_t value, int component) const {
+  // The first plane of value v's component c (a scalar's one plane for
+  // every c); of its part `part` (0: value, 1 to 3: partials) if v is dual.
+  std::size_t plane_offset(std::int32_t value, int component, int part = 0) const {
     const int components = component_count(ir_.code[value].type);
-    return register_offset_[value] + static_cast<std::size_t>(std::min(component, components - 1) * block);
+    const int c = std::min(component, components - 1);
+    const int plane = ir_.code[value].dual ? dual_floats * c + part : c;
+    return register_offset_[value] + static_cast<std::size_t>(plane * block);
   }
 
   ShadeIR ir_;
@@ -67,18 +72,26 @@ class InterpretedBinding final : public BoundKernel {
         kernel_(kernel),
         ir_(kernel.ir_),
         registers_(kernel.register_floats_),
+        zeros_(block, 0.0f),
         lane_lists_(static_cast<std::size_t>(kernel.max_region_depth_) * block),
         uniforms_(uniforms) {
     region_stack_.reserve(static_cast<std::size_t>(kernel.max_region_depth_));
-    in_planes_.resize(ir_.code.size() * 3 * max_op_args);
-    out_planes_.resize(ir_.code.size() * 3);
+    in_planes_.resize(ir_.code.size() * planes_per_value * max_op_args);
+    out_planes_.resize(ir_.code.size() * planes_per_value);
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
+      const int parts = instr.dual ? dual_floats : 1;
+      const float** in = &in_planes_[i * planes_per_value * max_op_args];
       for (int a = 0; a < instr.arg_count; ++a)
         for (int c = 0; c < 3; ++c)
-          in_planes_[(i * max_op_args + a) * 3 + c] = registers_.data() + kernel.plane_offset(instr.args[a], c);
+          for (int part = 0; part < parts; ++part)
+            in[(3 * a + c) * parts + part] = part > 0 && !ir_.code[instr.args[a]].dual
+                                                 ? zeros_.data()
+                                                 : registers_.data() + kernel.plane_offset(instr.args[a], c, part);
       for (int c = 0; c < component_count(instr.type); ++c)
-        out_planes_[i * 3 + c] = registers_.data() + kernel.plane_offset(static_cast<std::int32_t>(i), c);
+        for (int part = 0; part < parts; ++part)
+          out_planes_[i * planes_per_value + c * parts + part] =
+              registers_.data() + kernel.plane_offset(static_cast<std::int32_t>(i), c, part);
     }
     params_ = params;
     execute(Lanes{nullptr, block, true}, /*uniform_pass=*/true, SampleInputs{}, 0);
@@ -102,13 +115,23 @@ class InterpretedBinding final : public BoundKernel {
   }
 
  private:
-  float* out(std::size_t instruction, int component) { return out_planes_[instruction * 3 + component]; }
-  const float* in(std::size_t instruction, int arg, int component) const {
-    return in_planes_[(instruction * max_op_args + arg) * 3 + component];
+  // Plane `plane` of the result: component c, or part k of component c of
+  // a dual (plane 4c + k).
+  float* out(std::size_t instruction, int plane) { return out_planes_[instruction * planes_per_value + plane]; }
+  // Plane `plane` of the first argument, laid out as out() lays out results.
+  const float* first_in(std::size_t instruction, int plane) const {
+    return in_planes_[instruction * max_op_args * planes_per_value + plane];
   }
 
   static void fill(float value, float* to, const Lanes& lanes) {
     interp::for_lanes(lanes, [&](int lane) { to[lane] = value; });
+  }
+  static void copy(const float* from, float* to, const Lanes& lanes) {
+    interp::for_lanes(lanes, [&](int lane) { to[lane] = from[lane]; });
+  }
+  // d value / d P_k of the dual float `value`.
+  const float* partial_plane(std::int32_t value, int k) const {
+    return registers_.data() + kernel_.plane_offset(value, 0, 1 + k);
   }
 
   void execute(Lanes lanes, bool uniform_pass, const SampleInputs& inputs, std::size_t start) {
@@ -119,8 +142,8 @@ class InterpretedBinding final : public BoundKernel {
       if (instr.uniform != uniform_pass && !marker) continue;
       switch (instr.kind) {
         case IrOpKind::op:
-          kernel_.kernels_[i](interp::InstructionPlanes{&in_planes_[i * max_op_args * 3], &out_planes_[i * 3],
-                                                        &kernel_.constants_[i]},
+          kernel_.kernels_[i](interp::InstructionPlanes{&in_planes_[i * max_op_args * planes_per_value],
+                                                        &out_planes_[i * planes_per_value], &kernel_.constants_[i]},
                               lanes);
           break;
         case IrOpKind::constant:
@@ -138,17 +161,25 @@ class InterpretedBinding final : public BoundKernel {
               continue;
             }
             const float* from = inputs.plane(id, c) + start;
-            float* to = out(i, c);
-            interp::for_lanes(lanes, [&](int lane) { to[lane] = from[lane]; });
+            if (!instr.dual) {
+              copy(from, out(i, c), lanes);
+              continue;
+            }
+            // P's partials: dP_c / dP_k is 1 where k = c.
+            copy(from, out(i, dual_floats * c), lanes);
+            for (int k = 0; k < 3; ++k) fill(k == c ? 1.0f : 0.0f, out(i, dual_floats * c + 1 + k), lanes);
           }
           break;
         }
-        case IrOpKind::extract: {
-          const float* from = in(i, 0, instr.immediate[0]);
-          float* to = out(i, 0);
-          interp::for_lanes(lanes, [&](int lane) { to[lane] = from[lane]; });
+        case IrOpKind::extract:
+          // A dual's component brings its partials.
+          for (int part = 0; part < (instr.dual ? dual_floats : 1); ++part)
+            copy(first_in(i, instr.dual ? dual_floats * instr.immediate[0] + part : instr.immediate[0]), out(i, part),
+                 lanes);
           break;
-        }
+        case IrOpKind::partials:
+          for (int k = 0; k < 3; ++k) copy(partial_plane(instr.args[0], k), out(i, k), lanes);
+          break;
         case IrOpKind::begin_region: {
           // Regions hold only varying code: the uniform pass skips them.
           if (uniform_pass) {
@@ -156,7 +187,7 @@ class InterpretedBinding final : public BoundKernel {
             break;
           }
           std::uint16_t* list = lane_lists_.data() + region_stack_.size() * block;
-          const float* condition = in(i, 0, 0);
+          const float* condition = first_in(i, 0);
           const bool want = instr.immediate[0] == 0;
           int taken = 0;
           interp::for_lanes(lanes, [&](int lane) {
@@ -199,8 +230,12 @@ class InterpretedBinding final : public BoundKernel {
   // nesting up front: a region's list must not move while inner ones open.
   std::vector<std::uint16_t> lane_lists_;
   std::vector<Lanes> region_stack_;
-  std::vector<const float*> in_planes_;  // per instruction: max_op_args x 3
-  std::vector<float*> out_planes_;       // per instruction: 3
+  std::vector<float> zeros_;  // the partials of values that do not depend on P
+  // Per instruction: max_op_args x planes_per_value, and planes_per_value
+  // (3 components, 4 planes each for a dual; plain ones use the first 3).
+  static constexpr int planes_per_value = 3 * dual_floats;
+  std::vector<const float*> in_planes_;
+  std::vector<float*> out_planes_;
   UniformInputs uniforms_;
   const float* params_ = nullptr;  // during binding only
 };

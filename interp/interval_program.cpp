@@ -1,7 +1,8 @@
 // Interval evaluation of a program (see interval_program.h): one interval
 // register per component of each value; binding computes the uniform
 // values, evaluate() the varying ones in program order, ignoring region
-// markers.
+// markers. A dual instruction is bounded by its value alone, and a
+// gradient is not bounded at all.
 #include "interp/interval_program.h"
 
 #include <algorithm>
@@ -76,6 +77,9 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
       }
       case IrOpKind::extract:
         *out[0] = *in_planes_[i * max_op_args * 3 + static_cast<std::size_t>(instr.immediate[0])];
+        break;
+      case IrOpKind::partials:
+        for (int c = 0; c < components; ++c) *out[c] = lanes::everything();
         break;
       case IrOpKind::begin_region:
       case IrOpKind::end_region:

@@ -3,13 +3,14 @@
 
 #include <map>
 
+#include "ir/differentiate.h"
 
 namespace shadetree {
 namespace {
 
 class Lowering {
  public:
-  explicit Lowering(const CheckedGraph& graph) : graph_(graph) {}
+  explicit Lowering(const CheckedGraph& graph) : graph_(graph), differentiator_(ir_) {}
 
   Result<ShadeIR> run() {
     const Graph& source = *graph_.graph;
@@ -113,6 +114,8 @@ class Lowering {
       }
       return components;
     }
+    if (op == OpId::gradient) return {{differentiator_.gradient(inputs[0].first, node.node->id), Type::vec3}};
+    if (op == OpId::bump) return {{lower_bump(inputs, node.node->id), Type::vec3}};
     IrInstr instr;
     instr.op = op;
     instr.type = node.output_types[0];
@@ -139,8 +142,38 @@ class Lowering {
     return {{append(std::move(instr)), node.output_types[0]}};
   }
 
+  // An op instruction of the library, as lowering a node would make it.
+  std::int32_t op_instruction(OpId op, Type generic, Type type, std::initializer_list<std::int32_t> args,
+                              const std::string& source) {
+    IrInstr instr;
+    instr.op = op;
+    instr.generic = generic;
+    instr.type = type;
+    instr.source = source;
+    instr.uniform = true;
+    for (std::int32_t arg : args) {
+      instr.args[instr.arg_count++] = arg;
+      instr.uniform = instr.uniform && ir_.code[arg].uniform;
+    }
+    return append(std::move(instr));
+  }
+
+  // bump (nodes/ops/derivatives.h): normalize(n - strength (g - (g . n) n))
+  // with g the gradient of the height and n the normal, made unit.
+  std::int32_t lower_bump(const std::vector<TypedValue>& inputs, const std::string& source) {
+    const std::int32_t g = differentiator_.gradient(inputs[0].first, source);
+    const std::int32_t n = op_instruction(OpId::normalize, Type::vec3, Type::vec3, {inputs[1].first}, source);
+    const std::int32_t along_n = op_instruction(OpId::dot, Type::vec3, Type::float_, {g, n}, source);
+    const std::int32_t normal_part = op_instruction(OpId::mul, Type::vec3, Type::vec3, {n, along_n}, source);
+    const std::int32_t tangential = op_instruction(OpId::sub, Type::vec3, Type::vec3, {g, normal_part}, source);
+    const std::int32_t tilt = op_instruction(OpId::mul, Type::vec3, Type::vec3, {tangential, inputs[2].first}, source);
+    const std::int32_t bent = op_instruction(OpId::sub, Type::vec3, Type::vec3, {n, tilt}, source);
+    return op_instruction(OpId::normalize, Type::vec3, Type::vec3, {bent}, source);
+  }
+
   const CheckedGraph& graph_;
   ShadeIR ir_;
+  Differentiator differentiator_;
   std::vector<std::int32_t> param_values_;
 };
 

@@ -24,6 +24,8 @@ void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order) {
   ir.code = std::move(code);
 }
 
+int stored_components(const IrInstr& instr) { return component_count(instr.type) * (instr.dual ? 4 : 1); }
+
 Type argument_type(const IrInstr& instr, int a) {
   const PortSpec& port = op_def(instr.op).inputs[static_cast<std::size_t>(a)];
   return port.rule == TypeRule::generic ? instr.generic : port.type;
@@ -46,9 +48,10 @@ std::string format_shade_ir(const ShadeIR& ir) {
       case IrOpKind::extract: text << "extract." << "xyz"[instr.immediate[0]]; break;
       case IrOpKind::begin_region: text << (instr.immediate[0] ? "region unless" : "region if"); break;
       case IrOpKind::end_region: text << "end region"; break;
+      case IrOpKind::partials: text << "partials"; break;
     }
     if (instr.kind != IrOpKind::end_region && instr.kind != IrOpKind::begin_region)
-      text << " " << type_name(instr.type);
+      text << " " << (instr.dual ? "dual " : "") << type_name(instr.type);
     for (int a = 0; a < instr.arg_count; ++a) text << (a ? ", " : " ") << "%" << instr.args[a];
     if (instr.kind == IrOpKind::constant) {
       text << " [";

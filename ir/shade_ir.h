@@ -28,6 +28,7 @@ enum class IrOpKind : std::uint8_t {
                  // true (immediate[0] = 0) or false (immediate[0] = 1);
                  // immediate[1] is the index of the matching end_region
   end_region,
+  partials,      // the gradient, as a vec3, of args[0]: a dual float
 };
 
 struct IrInstr {
@@ -36,6 +37,10 @@ struct IrInstr {
   Type type = Type::float_;
   Type generic = Type::float_;  // the op's type variable T, where it has one
   bool uniform = false;  // depends only on params, constants and uniform globals
+  // A dual instruction (ir/differentiate.h) computes its value and its
+  // partial derivatives with respect to P: an op evaluated over duals, P
+  // itself, or a component of a dual. Its arguments may be dual or not.
+  bool dual = false;
   std::uint8_t arg_count = 0;
   std::array<std::int32_t, max_op_args> args{-1, -1, -1, -1, -1, -1};
   std::int32_t data_offset = 0;  // into ShadeIR::data
@@ -66,6 +71,10 @@ struct ShadeIR {
   std::vector<IrParam> params;
   int param_block_size = 0;  // floats
 };
+
+// Floats per sample that value `instr` takes: its components, four times
+// over for a dual (value and three partials, component by component).
+int stored_components(const IrInstr& instr);
 
 // Keeps the instructions listed in `order` (old indices, each argument
 // before its users), renumbering arguments and outputs.

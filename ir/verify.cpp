@@ -34,6 +34,20 @@ std::string verify_op(const ShadeIR& ir, const IrInstr& instr, std::size_t i) {
   return "";
 }
 
+// Dual instructions: varying values of floats, made only of ops, P and
+// components of duals, at least one argument of which is dual.
+std::string verify_dual(const ShadeIR& ir, const IrInstr& instr, std::size_t i) {
+  if (!instr.dual) return "";
+  if (instr.uniform || instr.type == Type::int_ || instr.type == Type::bool_)
+    return at(i) + "a dual that is uniform or not made of floats";
+  bool reads_dual = false;
+  for (int a = 0; a < instr.arg_count; ++a) reads_dual = reads_dual || ir.code[instr.args[a]].dual;
+  const bool is_p = instr.kind == IrOpKind::global && instr.immediate[0] == static_cast<int>(GlobalId::P);
+  if (!is_p && !((instr.kind == IrOpKind::op || instr.kind == IrOpKind::extract) && reads_dual))
+    return at(i) + "a dual that is neither P nor computed from a dual";
+  return "";
+}
+
 std::string verify_instruction(const ShadeIR& ir, const IrInstr& instr, std::size_t i) {
   if (instr.arg_count > max_op_args) return at(i) + "too many arguments";
   for (int a = 0; a < instr.arg_count; ++a) {
@@ -45,7 +59,10 @@ std::string verify_instruction(const ShadeIR& ir, const IrInstr& instr, std::siz
       return at(i) + "argument " + std::to_string(a) + " is a region marker";
     if (instr.uniform && !argument.uniform && instr.kind != IrOpKind::begin_region)
       return at(i) + "uniform, but reads the varying %" + std::to_string(instr.args[a]);
+    if (argument.dual && !instr.dual && instr.kind != IrOpKind::partials)
+      return at(i) + "reads the dual %" + std::to_string(instr.args[a]) + " but is not dual";
   }
+  if (std::string problem = verify_dual(ir, instr, i); !problem.empty()) return problem;
   switch (instr.kind) {
     case IrOpKind::op: return verify_op(ir, instr, i);
     case IrOpKind::constant:
@@ -75,6 +92,11 @@ std::string verify_instruction(const ShadeIR& ir, const IrInstr& instr, std::siz
       if (instr.uniform) return at(i) + "a region marker marked uniform";
       break;
     case IrOpKind::end_region: break;
+    case IrOpKind::partials:
+      if (instr.arg_count != 1 || !ir.code[instr.args[0]].dual || ir.code[instr.args[0]].type != Type::float_ ||
+          instr.type != Type::vec3 || instr.dual)
+        return at(i) + "partials of something other than a dual float";
+      break;
   }
   if (instr.data_offset < 0 || instr.data_count < 0 ||
       static_cast<std::size_t>(instr.data_offset) + static_cast<std::size_t>(instr.data_count) > ir.data.size())
@@ -104,8 +126,9 @@ std::string verify_shade_ir(const ShadeIR& ir) {
   const auto contract = output_contract(ir.kind);
   std::size_t next = 0;
   for (const IrOutput& output : ir.outputs) {
-    if (output.value < 0 || static_cast<std::size_t>(output.value) >= ir.code.size())
-      return "output " + std::string(output_id_name(output.id)) + " names no value";
+    if (output.value < 0 || static_cast<std::size_t>(output.value) >= ir.code.size() ||
+        ir.code[output.value].dual)
+      return "output " + std::string(output_id_name(output.id)) + " names no plain value";
     while (next < contract.size() && contract[next].id != output.id) ++next;
     if (next == contract.size())
       return "output " + std::string(output_id_name(output.id)) + " is not (in this order) in the contract of " +

@@ -33,7 +33,9 @@ namespace shadetree {
   /* soft objects (nodes/ops/soft_objects.h) */                               \
   X(sphere) X(box) X(torus) X(closest_on_sphere) X(closest_on_torus)        \
   X(mesh_distance) X(mesh_closest) X(intersect) X(union_) X(difference)      \
-  X(complement)
+  X(complement)                                                               \
+  /* derivatives (nodes/ops/derivatives.h) */                                 \
+  X(gradient) X(bump)
 
 enum class OpId : std::uint16_t {
 #define SHADETREE_GLOBAL_OP(name, type, variability, kinds, doc) name,

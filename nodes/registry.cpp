@@ -72,6 +72,7 @@ std::string_view family_name(OpFamily family) {
     case OpFamily::conditional: return "conditionals";
     case OpFamily::spline: return "splines and tables";
     case OpFamily::soft_object: return "soft objects";
+    case OpFamily::derivative: return "derivatives";
   }
   return "?";
 }

@@ -61,7 +61,7 @@ struct AttributeSpec {
 };
 
 enum class OpFamily : unsigned char {
-  input, generator, arithmetic, vector, conditional, spline, soft_object
+  input, generator, arithmetic, vector, conditional, spline, soft_object, derivative
 };
 
 // The tables an op reads besides its attribute data.

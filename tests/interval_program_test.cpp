@@ -18,6 +18,7 @@
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
+#include "support/one_op_graph.h"
 #include "support/random_graph.h"
 #include "support/test_files.h"
 
@@ -37,28 +38,6 @@ std::string show(Interval x) {
 TEST(IntervalKernels, EveryOpWithALaneFormHasAnIntervalForm) {
   for (const OpDef& op : all_ops())
     EXPECT_EQ(interp::op_kernel(op.id) != nullptr, interp::interval_kernel(op.id) != nullptr) << op.name;
-}
-
-// A graph whose only interesting node is `op` over inputs of type
-// `instance`, compiled as the checker and lowering lay it out.
-Result<LoadedGraph> one_op_graph(const OpDef& op, Type instance) {
-  std::string nodes = R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
-    {"id": "float_a", "op": "add", "in": {"a": "s.x", "b": "s.y"}},
-    {"id": "vec2_a", "op": "vec2", "in": {"x": "s.x", "y": "s.z"}}, {"id": "vec3_a", "op": "P"},
-    {"id": "color_a", "op": "to_color", "in": {"v": "p"}}, {"id": "bool_a", "op": "lt", "in": {"a": "s.x", "b": "s.y"}},
-    {"id": "n", "op": ")" + op.name + R"(", "in": {)";
-  for (std::size_t i = 0; i < op.inputs.size(); ++i) {
-    const PortSpec& port = op.inputs[i];
-    const Type type = port.rule == TypeRule::generic ? instance : port.type;
-    nodes += (i ? ", \"" : "\"") + port.name + "\": ";
-    nodes += type == Type::int_ ? std::string("3") : "\"" + std::string(type_name(type)) + "_a\"";
-  }
-  nodes += "}" + testing::attributes_for(op.id) + "}";
-  const Type output = op.outputs[0].rule == TypeRule::generic ? instance : op.outputs[0].type;
-  nodes += testing::to_color("n", output, "out");
-  const std::string kind = op.kinds.contains(GraphKind::surface) ? "surface" : "volume";
-  return compile_graph_text(testing::graph_text(nodes, R"("color": "out")", "", kind), "op.json", {}, {},
-                            testing::test_files());
 }
 
 // Random boxes of one argument component, and points inside them: near 0,
@@ -93,7 +72,7 @@ struct ArgumentBoxes {
 };
 
 void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_count) {
-  Result<LoadedGraph> loaded = one_op_graph(op, instance);
+  Result<LoadedGraph> loaded = testing::one_op_graph(op, instance);
   ASSERT_TRUE(loaded) << op.name << ": " << loaded.error().message;
   const ShadeIR& ir = loaded->ir;
   const IrInstr* found = nullptr;
@@ -147,11 +126,7 @@ void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_co
 TEST(IntervalKernels, EveryOpEnclosesItsLaneFormOverRandomBoxes) {
   for (const OpDef& op : all_ops()) {
     if (!interp::op_kernel(op.id)) continue;
-    std::vector<Type> instances = {Type::float_};
-    if (op.generic == GenericSet::numeric && !op.type_from_knots)
-      instances = {Type::float_, Type::vec2, Type::vec3, Type::color};
-    if (op.generic == GenericSet::vectors) instances = {Type::vec2, Type::vec3, Type::color};
-    for (Type instance : instances) {
+    for (Type instance : testing::op_instances(op)) {
       SCOPED_TRACE(op.name + " over " + std::string(type_name(instance)));
       expect_op_encloses_its_lane_form(op, instance, 1000);
     }

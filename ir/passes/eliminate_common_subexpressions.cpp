@@ -1,8 +1,8 @@
 // Common subexpression elimination. Graphs repeat work, most often through
 // functions inlined several times (marble_color applied twice, the same
 // noise octave in two branches) and through literals written more than
-// once. Ops are pure, so two instructions with the same op, type,
-// arguments, immediates and constant data compute the same value; later
+// once. Ops are pure, so two instructions with the same op, type, dual
+// form, arguments, immediates and constant data compute the same value; later
 // ones are redirected to the first, and dead code elimination then drops
 // them. Arguments are renumbered before each instruction is keyed, so
 // chains of duplicates collapse in one forward sweep.
@@ -22,6 +22,7 @@ std::string key_of(const ShadeIR& ir, const IrInstr& instr) {
   append(&instr.op, sizeof instr.op);
   append(&instr.type, sizeof instr.type);
   append(&instr.generic, sizeof instr.generic);
+  append(&instr.dual, sizeof instr.dual);
   append(&instr.arg_count, sizeof instr.arg_count);
   append(instr.args.data(), sizeof(std::int32_t) * instr.arg_count);
   append(instr.immediate.data(), sizeof instr.immediate);

@@ -6,6 +6,7 @@
 
 #include "nodes/ops/arithmetic.h"
 #include "nodes/ops/conditionals.h"
+#include "nodes/ops/derivatives.h"
 #include "nodes/ops/generators.h"
 #include "nodes/ops/soft_objects.h"
 #include "nodes/ops/splines.h"
