@@ -34,6 +34,12 @@ inline PortSpec period_input() {
   return in("period", Type::vec3, 4.0f, "repeats every this many units of p, per axis (whole, 1 to 256)");
 }
 
+// The fourth coordinate of the 4D noise ops, and their period along it.
+inline PortSpec w_input() { return in("w", Type::float_, "fourth coordinate, usually time: the noise evolves along it"); }
+inline PortSpec w_period_input() {
+  return in("w_period", Type::float_, 4.0f, "repeats every this many units of w (whole, 1 to 256): a loop's length");
+}
+
 // T -> T, applied to each component.
 inline OpDef unary(std::string name, std::string doc) {
   return {.name = std::move(name), .family = OpFamily::arithmetic, .doc = std::move(doc),

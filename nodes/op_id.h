@@ -17,7 +17,8 @@ namespace shadetree {
   /* generators (nodes/ops/generators.h) */                                   \
   X(noise) X(dnoise) X(vnoise) X(noise_improved) X(turbulence) X(fbm)        \
   X(sines) X(swave) X(julia) X(checker) X(cellular)                          \
-  X(pnoise) X(pturbulence) X(pfbm) X(pcellular)                              \
+  X(pnoise) X(pturbulence) X(pfbm) X(pcellular) X(pnoise_improved)          \
+  X(noise4) X(turbulence4) X(pnoise4) X(pturbulence4)                        \
   /* arithmetic (nodes/ops/arithmetic.h) */                                   \
   X(add) X(sub) X(mul) X(div) X(neg) X(min) X(max) X(clamp) X(abs) X(floor)  \
   X(fract) X(mod) X(pow) X(sqrt) X(exp) X(log) X(sin) X(cos) X(mix) X(step)  \

@@ -1,4 +1,5 @@
-// Generators: noise (Perlin 1985, Perlin & Hoffert 1989, Perlin 2002) and
+// Generators: noise (Perlin 1985, Perlin & Hoffert 1989, Perlin 2002; in
+// 3D, and in 4D for animations that evolve) and
 // the pattern generators of the Pixel-Planes 5 T-code set (Rhoades et al.
 // 1992). Each op: its definition and its semantics over a frame (see
 // nodes/op_frame.h); the formulas are in nodes/semantics/.
@@ -9,6 +10,7 @@
 #include "nodes/op_frame.h"
 #include "nodes/semantics/cellular.h"
 #include "nodes/semantics/noise.h"
+#include "nodes/semantics/noise4.h"
 #include "nodes/semantics/patterns.h"
 
 namespace shadetree::ops {
@@ -150,6 +152,84 @@ struct pfbm {
   static void evaluate(const X& x) {
     x.out() = sem::pfbm(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2), x.in(2),
                         x.in(3), x.in(4), x.in(5));
+  }
+};
+
+struct pnoise_improved {
+  static OpDef definition() {
+    return {.name = "pnoise_improved", .family = OpFamily::generator,
+            .doc = "Perlin 2002 improved noise repeating every period along each axis; a period of 256 is "
+                   "noise_improved",
+            .inputs = {in("p", Type::vec3), period_input()}, .outputs = {out(Type::float_)}};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pnoise_improved(x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1, 0), x.in(1, 1), x.in(1, 2));
+  }
+  static void evaluate_interval(const IntervalFrame& x) {
+    // noise_improved's proven bound: the same gradients and weights.
+    x.out() = lanes::lattice_range(x.in(0, 0), x.in(0, 1), x.in(0, 2), lanes::improved_noise_bound);
+  }
+};
+
+struct noise4 {
+  static OpDef definition() {
+    return {.name = "noise4", .family = OpFamily::generator,
+            .doc = "1989 gradient noise over 4D (p, w), |value| <= (sqrt(3)+1)/2, zero on the integer lattice: "
+                   "with w = time a texture evolves instead of sliding",
+            .inputs = {in("p", Type::vec3), w_input()}, .outputs = {out(Type::float_)},
+            .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::noise4(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1));
+  }
+};
+
+struct turbulence4 {
+  static OpDef definition() {
+    return {.name = "turbulence4", .family = OpFamily::generator,
+            .doc = "turbulence over 4D: sum of |noise4(2^i (p, w))| / 2^i; octaves stop where 2^-i <= "
+                   "filter_width",
+            .inputs = {in("p", Type::vec3), w_input(), in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::turbulence4(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1), x.in(2), x.in(3));
+  }
+};
+
+struct pnoise4 {
+  static OpDef definition() {
+    return {.name = "pnoise4", .family = OpFamily::generator,
+            .doc = "noise4 repeating every period along x, y, z and every w_period along w: tileable textures "
+                   "that loop in time",
+            .inputs = {in("p", Type::vec3), w_input(), period_input(), w_period_input()},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pnoise4(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1), x.in(2, 0), x.in(2, 1),
+                           x.in(2, 2), x.in(3));
+  }
+};
+
+struct pturbulence4 {
+  static OpDef definition() {
+    return {.name = "pturbulence4", .family = OpFamily::generator,
+            .doc = "turbulence4 repeating every period and w_period: octave i is pnoise4(2^i (p, w)) with periods "
+                   "2^i (period, w_period)",
+            .inputs = {in("p", Type::vec3), w_input(), period_input(), w_period_input(),
+                       in("octaves", Type::int_, 6.0f, "number of octaves, at most 16"),
+                       in("filter_width", Type::float_, 0.0f, "sample footprint; 0 disables clamping")},
+            .outputs = {out(Type::float_)}, .attributes = {seed_attribute()}, .tables = OpTables::noise};
+  }
+  template <class X>
+  static void evaluate(const X& x) {
+    x.out() = sem::pturbulence4(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2), x.in(1), x.in(2, 0), x.in(2, 1),
+                                x.in(2, 2), x.in(3), x.in(4), x.in(5));
   }
 };
 

@@ -99,13 +99,14 @@ PeriodicAxis<F> periodic_axis(F x, F period) {
 // hashed-gradient slot (i + phi(j + phi(k))) mod n, so that its gradient
 // G[phi(i + phi(j + phi(k)))] is hashed_gradient[slot], and its offset
 // (u, v, w) = p - (i, j, k). The axes say how cells hash: as they are, or
-// wrapped by a period.
+// wrapped by a period. `outer_hash`, added to k before its phi, is how a
+// fourth axis extends the hash (nodes/semantics/noise4.h); 0 for 3D.
 template <class F, class Axis, class Visit>
 void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
-                         Visit visit) {
+                         IntOf<F> outer_hash, Visit visit) {
   F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
   for (int dk = 0; dk < 2; ++dk) {
-    auto hash_k = noise_phi(tables, az.index(dk));
+    auto hash_k = noise_phi(tables, az.index(dk) + outer_hash);
     F w = fz - float(dk);
     for (int dj = 0; dj < 2; ++dj) {
       auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
@@ -117,6 +118,12 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& a
       }
     }
   }
+}
+
+template <class F, class Axis, class Visit>
+void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
+                         Visit visit) {
+  for_each_noise_knot(tables, x, y, z, ax, ay, az, IntOf<F>{} + 0, visit);
 }
 
 template <class F, class Visit>
@@ -200,18 +207,25 @@ F improved_gradient(I hash, F x, F y, F z) {
   return select((h & 1) == 0, u, -u) + select((h & 2) == 0, v, -v);
 }
 
-// Follows the structure of Perlin's 2002 reference implementation exactly.
-template <class F>
-F noise_improved(F x, F y, F z) {
+// Follows the structure of Perlin's 2002 reference implementation exactly,
+// with the lattice indices X + 1, Y + 1, Z + 1 of its next cells taken from
+// the axes: on a LatticeAxis they are those sums (the same lookups as the
+// reference), on a PeriodicAxis the next cell wrapped by the period.
+template <class F, class Axis>
+F improved_noise_on_axes(F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az) {
   const std::int32_t* p = improved_noise_permutation.data();
-  auto lx = lattice_coordinate(x), ly = lattice_coordinate(y), lz = lattice_coordinate(z);
-  auto X = lx.hash_index, Y = ly.hash_index, Z = lz.hash_index;
-  x = x - lx.cell;
-  y = y - ly.cell;
-  z = z - lz.cell;
+  auto X = ax.index(0), Y = ay.index(0), Z = az.index(0);
+  auto X1 = ax.index(1), Y1 = ay.index(1), Z1 = az.index(1);
+  x = x - ax.corner();
+  y = y - ay.corner();
+  z = z - az.corner();
   F u = improved_fade(x), v = improved_fade(y), w = improved_fade(z);
-  auto A = gather(p, X) + Y, AA = gather(p, A) + Z, AB = gather(p, A + 1) + Z;
-  auto B = gather(p, X + 1) + Y, BA = gather(p, B) + Z, BB = gather(p, B + 1) + Z;
+  // The reference's A = p[X] + Y, AA = p[A] + Z, AB = p[A + 1] + Z, and
+  // p[AA + 1] its last lookup: here hash_ay = p[p[X] + Y], and so on.
+  auto A = gather(p, X), hash_ay = gather(p, A + Y), hash_ay1 = gather(p, A + Y1);
+  auto B = gather(p, X1), hash_by = gather(p, B + Y), hash_by1 = gather(p, B + Y1);
+  auto AA = hash_ay + Z, BA = hash_by + Z, AB = hash_ay1 + Z, BB = hash_by1 + Z;
+  auto AA1 = hash_ay + Z1, BA1 = hash_by + Z1, AB1 = hash_ay1 + Z1, BB1 = hash_by1 + Z1;
   return improved_lerp(
       w,
       improved_lerp(v,
@@ -220,10 +234,23 @@ F noise_improved(F x, F y, F z) {
                     improved_lerp(u, improved_gradient(gather(p, AB), x, y - 1.0f, z),
                                   improved_gradient(gather(p, BB), x - 1.0f, y - 1.0f, z))),
       improved_lerp(v,
-                    improved_lerp(u, improved_gradient(gather(p, AA + 1), x, y, z - 1.0f),
-                                  improved_gradient(gather(p, BA + 1), x - 1.0f, y, z - 1.0f)),
-                    improved_lerp(u, improved_gradient(gather(p, AB + 1), x, y - 1.0f, z - 1.0f),
-                                  improved_gradient(gather(p, BB + 1), x - 1.0f, y - 1.0f, z - 1.0f))));
+                    improved_lerp(u, improved_gradient(gather(p, AA1), x, y, z - 1.0f),
+                                  improved_gradient(gather(p, BA1), x - 1.0f, y, z - 1.0f)),
+                    improved_lerp(u, improved_gradient(gather(p, AB1), x, y - 1.0f, z - 1.0f),
+                                  improved_gradient(gather(p, BB1), x - 1.0f, y - 1.0f, z - 1.0f))));
+}
+
+template <class F>
+F noise_improved(F x, F y, F z) {
+  return improved_noise_on_axes(x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z));
+}
+
+// Improved noise repeating every period (whole cells, per axis); a period
+// of 256, its permutation's own, gives noise_improved bit for bit.
+template <class F>
+F pnoise_improved(F x, F y, F z, F px, F py, F pz) {
+  return improved_noise_on_axes(x, y, z, periodic_axis(x, noise_period(px)), periodic_axis(y, noise_period(py)),
+                                periodic_axis(z, noise_period(pz)));
 }
 
 // Octave i (scale 2^-i) takes part while i < octaves and, as in the loop

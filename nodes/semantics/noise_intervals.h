@@ -1,7 +1,8 @@
 // Interval forms of the lattice functions (noise.h, cellular.h), which
 // hash cells in bits and so cannot be instantiated over intervals. They
 // are overloads in the namespace of Interval: noise, pnoise, vnoise,
-// turbulence, fbm and their periodic twins reach noise_on_axes, and
+// turbulence, fbm and their periodic twins reach noise_on_axes, the 4D
+// noise4, pnoise4, turbulence4 and pturbulence4 reach noise4_on_axes, and
 // cellular and pcellular reach cellular_on_axes, by argument-dependent
 // lookup, so those ops need no interval form of their own.
 #pragma once
@@ -12,6 +13,7 @@
 #include "nodes/noise_tables.h"
 #include "nodes/semantics/cellular.h"
 #include "nodes/semantics/noise.h"
+#include "nodes/semantics/noise4.h"
 
 namespace shadetree::lanes {
 
@@ -42,45 +44,60 @@ inline Interval lattice_range(Interval x, Interval y, Interval z, float bound) {
   return {-bound - lattice_rounding_margin, bound + lattice_rounding_margin};
 }
 
-// Noise over the box, cell by cell: within a cell each knot's gradient is
-// known, its weights are monotone in the offsets and its slope linear in
-// them. `cell_axis(cell, axis)` gives the float axis a cell hashes with.
-template <class CellAxis>
-Interval noise_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, CellAxis cell_axis) {
-  const Interval range = lattice_range(x, y, z, noise_bound);
+inline Interval lattice_range(Interval x, Interval y, Interval z, Interval w, float bound) {
+  if (!is_finite(w)) return everything();
+  return lattice_range(x, y, z, bound);
+}
+
+// A lattice function over a box of D coordinates, cell by cell, within its
+// proven range: `over_cell(corner, fraction)` encloses it over the box's
+// part of one cell, given as offsets from the cell's corner (exact).
+template <int D, class OverCell>
+Interval lattice_over_cells(const Interval (&box)[D], Interval range, OverCell over_cell) {
   if (is_everything(range)) return range;
-  const Interval box[3] = {x, y, z};
-  float first[3];
-  int count[3];
-  for (int a = 0; a < 3; ++a) {
+  float first[D];
+  int count[D], cells = 1;
+  for (int a = 0; a < D; ++a) {
     if (std::fabs(box[a].lo) >= max_enclosed_noise_coordinate || std::fabs(box[a].hi) >= max_enclosed_noise_coordinate)
       return range;
     first[a] = std::floor(box[a].lo);
     count[a] = static_cast<int>(std::floor(box[a].hi) - first[a]) + 1;
     if (count[a] > max_enclosed_noise_cells) return range;
+    cells *= count[a];
   }
-  if (count[0] * count[1] * count[2] > max_enclosed_noise_cells) return range;
+  if (cells > max_enclosed_noise_cells) return range;
   Interval result{infinity, -infinity};
-  for (int k = 0; k < count[2]; ++k)
-    for (int j = 0; j < count[1]; ++j)
-      for (int i = 0; i < count[0]; ++i) {
-        const float corner[3] = {first[0] + float(i), first[1] + float(j), first[2] + float(k)};
-        Interval fraction[3];  // the box's part of this cell, as offsets from its corner (exact)
-        for (int a = 0; a < 3; ++a)
-          fraction[a] = {std::max(box[a].lo, corner[a]) - corner[a], std::min(box[a].hi, corner[a] + 1.0f) - corner[a]};
-        Interval sum = 0.0f;
-        // At the corner itself each knot's offsets are minus its lattice step.
-        semantics::for_each_noise_knot(
-            tables, corner[0], corner[1], corner[2], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
-            cell_axis(corner[2], 2), [&](auto slot, float du, float dv, float dw) {
-              const Interval u = fraction[0] + du, v = fraction[1] + dv, w = fraction[2] + dw;
-              const Interval slope = u * tables.hashed_gradient_x[slot] + v * tables.hashed_gradient_y[slot] +
-                                     w * tables.hashed_gradient_z[slot];
-              sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(w) * slope;
-            });
-        result = hull(result, sum);
-      }
+  for (int cell = 0; cell < cells; ++cell) {
+    float corner[D];
+    Interval fraction[D];
+    for (int a = 0, rest = cell; a < D; rest /= count[a], ++a) {
+      corner[a] = first[a] + float(rest % count[a]);
+      fraction[a] = {std::max(box[a].lo, corner[a]) - corner[a], std::min(box[a].hi, corner[a] + 1.0f) - corner[a]};
+    }
+    result = hull(result, over_cell(corner, fraction));
+  }
   return meet(widened(result, lattice_rounding_margin), range);
+}
+
+// Noise over the box, cell by cell: within a cell each knot's gradient is
+// known, its weights are monotone in the offsets and its slope linear in
+// them. `cell_axis(cell, axis)` gives the float axis a cell hashes with.
+template <class CellAxis>
+Interval noise_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, CellAxis cell_axis) {
+  const Interval box[3] = {x, y, z};
+  return lattice_over_cells(box, lattice_range(x, y, z, noise_bound), [&](const float* corner, const Interval* fraction) {
+    Interval sum = 0.0f;
+    // At the corner itself each knot's offsets are minus its lattice step.
+    semantics::for_each_noise_knot(
+        tables, corner[0], corner[1], corner[2], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
+        cell_axis(corner[2], 2), [&](auto slot, float du, float dv, float dw) {
+          const Interval u = fraction[0] + du, v = fraction[1] + dv, w = fraction[2] + dw;
+          const Interval slope = u * tables.hashed_gradient_x[slot] + v * tables.hashed_gradient_y[slot] +
+                                 w * tables.hashed_gradient_z[slot];
+          sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(w) * slope;
+        });
+    return sum;
+  });
 }
 
 inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z,
@@ -90,15 +107,61 @@ inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y,
 }
 
 // Periods that differ over the box are bounded by the proven range alone.
+inline bool is_one_period(const semantics::PeriodicAxis<Interval>& axis) {
+  return is_point(axis.period) && is_finite(axis.period);
+}
+
 inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z,
                               const semantics::PeriodicAxis<Interval>& ax, const semantics::PeriodicAxis<Interval>& ay,
                               const semantics::PeriodicAxis<Interval>& az) {
-  if (!is_point(ax.period) || !is_point(ay.period) || !is_point(az.period) || !is_finite(ax.period) ||
-      !is_finite(ay.period) || !is_finite(az.period))
-    return lattice_range(x, y, z, noise_bound);
+  if (!is_one_period(ax) || !is_one_period(ay) || !is_one_period(az)) return lattice_range(x, y, z, noise_bound);
   const float period[3] = {ax.period.lo, ay.period.lo, az.period.lo};
   return noise_over_cells(tables, x, y, z,
                           [&](float cell, int axis) { return semantics::periodic_axis(cell, period[axis]); });
+}
+
+// The proven range of noise4. A knot's term is W_k (g . d) with g =
+// (G, c), G a unit vector and |c| <= 1 (noise4.h), so |g . d| <= |d_xyz| +
+// |d_w|; the 16 weights W_k sum to 1, so by Jensen sum W_k |d_xyz| <=
+// sqrt(sum W_k |d_xyz|^2) = sqrt(q(u) + q(v) + q(s)) <= sqrt(3) / 2 and
+// sum W_k |d_w| <= sqrt(q(t)) <= 1 / 2, with q as for noise:
+// |noise4| <= (sqrt(3) + 1) / 2.
+inline constexpr float noise4_bound = 1.3660254f;
+
+// noise4 over the box, cell by cell, as noise_over_cells does in 3D.
+template <class CellAxis>
+Interval noise4_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, Interval w,
+                           CellAxis cell_axis) {
+  const Interval box[4] = {x, y, z, w};
+  return lattice_over_cells(box, lattice_range(x, y, z, w, noise4_bound), [&](const float* corner,
+                                                                               const Interval* fraction) {
+    Interval sum = 0.0f;
+    semantics::for_each_noise4_knot(
+        tables, corner[0], corner[1], corner[2], corner[3], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
+        cell_axis(corner[2], 2), cell_axis(corner[3], 3), [&](auto slot, float du, float dv, float ds, float dt) {
+          const Interval u = fraction[0] + du, v = fraction[1] + dv, s = fraction[2] + ds, t = fraction[3] + dt;
+          sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(s) * noise_weight_over(t) *
+                          semantics::noise4_slope(tables, slot, u, v, s, t);
+        });
+    return sum;
+  });
+}
+
+inline Interval noise4_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z, Interval w,
+                               const semantics::LatticeAxis<Interval>&, const semantics::LatticeAxis<Interval>&,
+                               const semantics::LatticeAxis<Interval>&, const semantics::LatticeAxis<Interval>&) {
+  return noise4_over_cells(tables, x, y, z, w, [](float cell, int) { return semantics::lattice_axis(cell); });
+}
+
+inline Interval noise4_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z, Interval w,
+                               const semantics::PeriodicAxis<Interval>& ax, const semantics::PeriodicAxis<Interval>& ay,
+                               const semantics::PeriodicAxis<Interval>& az,
+                               const semantics::PeriodicAxis<Interval>& aw) {
+  if (!is_one_period(ax) || !is_one_period(ay) || !is_one_period(az) || !is_one_period(aw))
+    return lattice_range(x, y, z, w, noise4_bound);
+  const float period[4] = {ax.period.lo, ay.period.lo, az.period.lo, aw.period.lo};
+  return noise4_over_cells(tables, x, y, z, w,
+                           [&](float cell, int axis) { return semantics::periodic_axis(cell, period[axis]); });
 }
 
 // F1 and F2 over a box: the nearest feature point lies in p's own cell

@@ -1,0 +1,86 @@
+// Noise over four dimensions, p and a fourth coordinate w (usually time),
+// for animations that evolve rather than slide: the 1989 gradient noise
+// (section 2.3) over a 4D lattice, and turbulence and periodic forms of it.
+#pragma once
+
+#include "nodes/semantics/noise.h"
+
+namespace shadetree::semantics {
+
+using namespace shadetree::lanes;
+
+// Visits the 2^4 knots around (p, w), giving each one's slot
+// (i + phi(j + phi(k + phi(l)))) mod n, the 1989 hash with one more fold,
+// and its offset (u, v, s, t) = (p, w) - (i, j, k, l).
+template <class F, class Axis, class Visit>
+void for_each_noise4_knot(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
+                          const Axis& az, const Axis& aw, Visit visit) {
+  F fw = w - aw.corner();
+  for (int dl = 0; dl < 2; ++dl) {
+    auto hash_l = noise_phi(tables, aw.index(dl));
+    F t = fw - float(dl);
+    for_each_noise_knot(tables, x, y, z, ax, ay, az, hash_l, [&](auto slot, F u, F v, F s) { visit(slot, u, v, s, t); });
+  }
+}
+
+// A knot's 4D gradient: the unit vector G[phi(slot)] of the 3D tables for
+// (x, y, z), and for w the x component of G[slot], another table entry. A
+// coordinate of a uniform unit 3-vector is uniform in [-1, 1] (Archimedes),
+// so every component has mean 0 and variance 1/3 and they are uncorrelated:
+// E[g g^T] = I / 3 in 4D, as for the 3D gradients. Noise is linear in
+// independent gradients, so its covariance, hence its spectrum, depends on
+// them only through E[g g^T]: it is isotropic in (p, w) to second order.
+template <class F, class Slot>
+F noise4_slope(const NoiseTables& tables, Slot slot, F u, F v, F s, F t) {
+  return gather256(tables.hashed_gradient_x.data(), slot) * u + gather256(tables.hashed_gradient_y.data(), slot) * v +
+         gather256(tables.hashed_gradient_z.data(), slot) * s + gather256(tables.gradient_x.data(), slot) * t;
+}
+
+// sum over the 16 knots of w(u) w(v) w(s) w(t) (g . (u, v, s, t)).
+template <class F, class Axis>
+F noise4_on_axes(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay, const Axis& az,
+                 const Axis& aw) {
+  F sum = splat<F>(0.0f);
+  for_each_noise4_knot(tables, x, y, z, w, ax, ay, az, aw, [&](auto slot, F u, F v, F s, F t) {
+    sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(s) * noise_weight(t) *
+                    noise4_slope(tables, slot, u, v, s, t);
+  });
+  return sum;
+}
+
+template <class F>
+F noise4(const NoiseTables& tables, F x, F y, F z, F w) {
+  return noise4_on_axes(tables, x, y, z, w, lattice_axis(x), lattice_axis(y), lattice_axis(z), lattice_axis(w));
+}
+
+// noise4 repeating every period along x, y, z and every w_period along w
+// (whole cells, 1 to 256): with w = time, a loop of w_period.
+template <class F>
+F pnoise4(const NoiseTables& tables, F x, F y, F z, F w, F px, F py, F pz, F pw) {
+  return noise4_on_axes(tables, x, y, z, w, periodic_axis(x, noise_period(px)), periodic_axis(y, noise_period(py)),
+                        periodic_axis(z, noise_period(pz)), periodic_axis(w, noise_period(pw)));
+}
+
+// Turbulence over (p, w): octave i is noise4 of 2^i (p, w).
+template <class F>
+F turbulence4(const NoiseTables& tables, F x, F y, F z, F w, F octaves, F filter_width) {
+  return turbulence_of(octaves, filter_width,
+                       [&](float f) { return noise4(tables, x * f, y * f, z * f, w * f); });
+}
+
+// turbulence4 repeating every period: octave i is pnoise4 of 2^i (p, w)
+// with periods 2^i (period, w_period), so every octave repeats where the
+// first does.
+template <class F>
+F pturbulence4(const NoiseTables& tables, F x, F y, F z, F w, F px, F py, F pz, F pw, F octaves,
+               F filter_width) {
+  const F period_x = noise_period(px), period_y = noise_period(py), period_z = noise_period(pz),
+          period_w = noise_period(pw);
+  return turbulence_of(octaves, filter_width, [&](float f) {
+    return noise4_on_axes(tables, x * f, y * f, z * f, w * f, periodic_axis(x * f, period_x * f),
+                          periodic_axis(y * f, period_y * f), periodic_axis(z * f, period_z * f),
+                          periodic_axis(w * f, period_w * f));
+  });
+}
+
+}  // namespace shadetree::semantics
