@@ -67,4 +67,13 @@ Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const Sh
   return make_jit_kernel(ir, width);
 }
 
+void add_sampling_options(CLI::App& command, SamplingArguments& arguments) {
+  command.add_option("--set", arguments.assignments, "set a param: NAME=VALUE (repeatable)");
+  add_finite_option(command, "--frame", arguments.frame, "animation frame (time = frame / 24)");
+  command.add_option("--threads", arguments.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  command.add_option("--backend", arguments.backend, "backend: jit (default) or interp")
+      ->check(CLI::IsMember({"jit", "interp"}));
+  add_search_path_option(command, arguments.search_paths);
+}
+
 }  // namespace shadetree

@@ -42,6 +42,18 @@ void add_search_path_option(CLI::App& command, std::vector<std::string>& search_
 CLI::Option* add_finite_option(CLI::App& command, const std::string& name, std::optional<float>& value,
                                const std::string& description);
 
+// The options of the commands that sample a graph into files rather than
+// render it (voxelize, bake): --set, --frame, --threads, --backend (jit or
+// interp) and --search-path.
+struct SamplingArguments {
+  std::vector<std::string> assignments;
+  std::optional<float> frame;
+  int threads = 0;
+  std::string backend = "jit";
+  std::vector<std::string> search_paths;
+};
+void add_sampling_options(CLI::App& command, SamplingArguments& arguments);
+
 // The kernel of `ir` from the named backend ("jit" or "interp"); width is
 // the JIT's vector width (0: the host's).
 Result<std::unique_ptr<Kernel>> make_kernel(const std::string& backend, const ShadeIR& ir, int width);

@@ -25,11 +25,7 @@ struct VoxelizeArguments {
   std::string file;
   std::string output;
   int resolution = 128;
-  std::vector<std::string> assignments;
-  std::optional<float> frame;
-  int threads = 0;
-  std::string backend = "jit";
-  std::vector<std::string> search_paths;
+  SamplingArguments sampling;
 };
 
 // A .vdb path in a folder that exists: checked before any sampling.
@@ -41,7 +37,7 @@ Status check_vdb_path(const std::string& path) {
 
 ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
   Result<LoadedGraph> loaded =
-      load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
+      load_and_compile(arguments.file, arguments.sampling.assignments, {}, graph_files(arguments.sampling.search_paths));
   if (!loaded) return report(loaded.error());
   const Graph& graph = *loaded->graph;
   if (graph.kind != GraphKind::volume)
@@ -49,14 +45,14 @@ ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
                              "voxelize samples volume graphs; this is " + a_graph_of(graph.kind)});
   Status writable = check_vdb_path(arguments.output);
   if (!writable) return report(writable.error());
-  Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, loaded->ir, 0);
+  Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.sampling.backend, loaded->ir, 0);
   if (!kernel) return report(kernel.error());
 
   ProgressReporter progress("voxelizing " + arguments.file, "slices", "voxels");
   VoxelizeOptions options;
   options.resolution = arguments.resolution;
-  options.frame = arguments.frame.value_or(graph.render.frame);
-  options.threads = arguments.threads;
+  options.frame = arguments.sampling.frame.value_or(graph.render.frame);
+  options.threads = arguments.sampling.threads;
   options.progress = progress.callback();
   const auto start = std::chrono::steady_clock::now();
   Result<VoxelGrid> grid = voxelize(**kernel, loaded->params, *graph.render.volume, options);
@@ -68,7 +64,7 @@ ExitStatus voxelize_graph(const VoxelizeArguments& arguments) {
   for (float density : grid->density) occupied += density > 0.0f;
   std::fprintf(stderr, "%s: %dx%dx%d voxels of %g, %zu with density, sampled in %.3f s (%.2f M samples/s, %s) -> %s\n",
                arguments.file.c_str(), grid->size[0], grid->size[1], grid->size[2], grid->voxel_size, occupied, seconds,
-               static_cast<double>(grid->density.size()) / seconds / 1e6, arguments.backend.c_str(),
+               static_cast<double>(grid->density.size()) / seconds / 1e6, arguments.sampling.backend.c_str(),
                arguments.output.c_str());
   return ExitStatus::ok;
 }
@@ -84,13 +80,7 @@ void add_voxelize_command(CLI::App& app, CommandRunner& run) {
                       "voxels along the longest side of the graph's render.volume bounds (default 128, at most " +
                           std::to_string(max_voxel_resolution) + ")")
       ->check(CLI::Range(1, max_voxel_resolution));
-  command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
-  add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
-  command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
-  command->add_option("--backend", arguments->backend, "backend: jit (default) or interp")
-      ->check(CLI::IsMember({"jit", "interp"}));
-  add_search_path_option(*command, arguments->search_paths);
+  add_sampling_options(*command, arguments->sampling);
   command->callback([&run, arguments] { run = [arguments] { return voxelize_graph(*arguments); }; });
 }
 

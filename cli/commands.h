@@ -22,6 +22,7 @@ void add_schema_command(CLI::App& app, CommandRunner& run);
 void add_emit_command(CLI::App& app, CommandRunner& run);
 void add_bench_command(CLI::App& app, CommandRunner& run);
 void add_voxelize_command(CLI::App& app, CommandRunner& run);
+void add_bake_command(CLI::App& app, CommandRunner& run);
 void add_serve_command(CLI::App& app, CommandRunner& run);
 
 // Prints a diagnostic as its one line on stderr; returns its exit status.

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   add_emit_command(app, run);
   add_bench_command(app, run);
   add_voxelize_command(app, run);
+  add_bake_command(app, run);
   add_serve_command(app, run);
   try {
     app.parse(argc, argv);

@@ -78,15 +78,17 @@ std::string reproducible_date() {
 }  // namespace
 
 // Writes the pixels to `file` in the format `format_path`'s extension names;
-// 8-bit when `eight_bit`, 32-bit float otherwise. 0 on success.
+// `bits` per channel: 8 or 16 (unsigned, clamped to [0,1]) or 32 (float).
+// 0 on success.
 extern "C" int shadetree_image_io_write(const char* format_path, const char* file, const float* pixels, int width,
-                                        int height, int channels, int eight_bit, char* error, std::size_t error_size) {
+                                        int height, int channels, int bits, char* error, std::size_t error_size) {
   auto output = OIIO::ImageOutput::create(format_path);
   if (!output) {
     set_error(error, error_size, OIIO::geterror());
     return 1;
   }
-  OIIO::ImageSpec spec(width, height, channels, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+  const OIIO::TypeDesc type = bits == 8 ? OIIO::TypeDesc::UINT8 : bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::FLOAT;
+  OIIO::ImageSpec spec(width, height, channels, type);
   spec.attribute("Software", "shadetree");
   if (const std::string date = reproducible_date(); !date.empty()) spec.attribute("DateTime", date);
   if (!output->open(file, spec)) {

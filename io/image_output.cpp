@@ -42,7 +42,7 @@ Status check_image_path(const std::string& path) {
   return check_output_folder(path);
 }
 
-Status write_image(const Image& image, const std::string& path) {
+Status write_image(const Image& image, const std::string& path, int png_bits) {
   Status writable = check_image_path(path);
   if (!writable) return writable;
   const std::string extension = lowercase_extension(path);
@@ -51,7 +51,7 @@ Status write_image(const Image& image, const std::string& path) {
   return write_then_rename(path, [&](const std::string& temporary) {
     char reason[512] = "";
     return module.write(path.c_str(), temporary.c_str(), image.pixels.data(), image.width, image.height,
-                        image.channels, extension == ".png", reason, sizeof reason) != 0
+                        image.channels, extension == ".png" ? png_bits : 32, reason, sizeof reason) != 0
                ? std::string(reason)
                : std::string();
   });

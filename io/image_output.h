@@ -14,9 +14,9 @@ namespace shadetree {
 // folder: checked before a render so that a typo costs no render time.
 Status check_image_path(const std::string& path);
 
-// PNG (8-bit, values clamped to [0,1]) or EXR (32-bit float, unclamped),
-// chosen by the extension of `path`.
-Status write_image(const Image& image, const std::string& path);
+// PNG (8 or 16 bits, values clamped to [0,1]) or EXR (32-bit float,
+// unclamped), chosen by the extension of `path`.
+Status write_image(const Image& image, const std::string& path, int png_bits = 8);
 
 // Reads any OpenImageIO format as float pixels; an image of more than
 // `max_pixels` pixels (when positive) is an error, found before its

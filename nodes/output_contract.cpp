@@ -6,6 +6,11 @@ namespace {
 constexpr OutputSpec texture_outputs[] = {
     {OutputId::color, "color", Type::color, true, "the texture colour (a float is shown as grey)"},
     {OutputId::alpha, "alpha", Type::float_, false, "coverage in [0,1]; the image gets an alpha channel"},
+    {OutputId::height, "height", Type::float_, false,
+     "height above the texture plane, in the units of P (bake: a height map, and the normal map's source)"},
+    {OutputId::normal, "normal", Type::vec3, false,
+     "tangent-space normal, +z out of the texture (bake: the normal map; default: from the height)"},
+    {OutputId::roughness, "roughness", Type::float_, false, "roughness in [0,1] (bake: a roughness map)"},
 };
 
 constexpr OutputSpec surface_outputs[] = {
@@ -32,7 +37,7 @@ constexpr OutputSpec environment_outputs[] = {
 
 std::string_view output_id_name(OutputId id) {
   constexpr std::string_view names[] = {"color",    "alpha",    "normal", "specular", "roughness",
-                                        "opacity",  "emission", "density", "ior"};
+                                        "opacity",  "emission", "density", "ior",      "height"};
   static_assert(std::size(names) == output_id_count);
   return names[static_cast<int>(id)];
 }

@@ -20,8 +20,8 @@
 namespace shadetree {
 
 // Every output name of every contract.
-enum class OutputId : std::uint8_t { color, alpha, normal, specular, roughness, opacity, emission, density, ior };
-inline constexpr int output_id_count = 9;
+enum class OutputId : std::uint8_t { color, alpha, normal, specular, roughness, opacity, emission, density, ior, height };
+inline constexpr int output_id_count = 10;
 
 std::string_view output_id_name(OutputId id);
 

@@ -77,6 +77,11 @@ Status set_param(LoadedGraph& loaded, const std::string& name, const std::string
   return invalid_input("--set: unknown param \"" + name + "\" (params: " + (known.empty() ? "none" : known) + ")");
 }
 
+Result<LoadedGraph> compile_graph(Graph graph, const std::vector<std::string>& assignments, const GraphFiles& files) {
+  const std::string file = graph.file;
+  return compile_parsed(std::move(graph), file, assignments, {}, files);
+}
+
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
                                      const PassObserver& observe, const GraphFiles& files) {
   return compile_parsed(load_graph(path), path, assignments, observe, files);

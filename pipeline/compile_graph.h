@@ -32,6 +32,11 @@ Status set_param(LoadedGraph& loaded, const std::string& name, const std::string
 Result<LoadedGraph> load_and_compile(const std::string& path, const std::vector<std::string>& assignments,
                                      const PassObserver& observe = {}, const GraphFiles& files = {});
 
+// The same from a parsed graph (its `file` names it in messages), for
+// commands that add to a graph before compiling it (bake).
+Result<LoadedGraph> compile_graph(Graph graph, const std::vector<std::string>& assignments,
+                                  const GraphFiles& files = {});
+
 // The same from JSON text; `file` names it in messages.
 Result<LoadedGraph> compile_graph_text(const std::string& json, const std::string& file,
                                        const std::vector<std::string>& assignments = {},

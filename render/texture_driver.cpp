@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "schedule/image_tiles.h"
 #include "schedule/thread_bindings.h"
@@ -92,18 +93,18 @@ TextureSample texture_sample_at_pixel(const TextureView& view, int column, int r
   return sample;
 }
 
-Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
-                             const TextureRenderOptions& options) {
+Result<std::vector<Image>> render_texture_outputs(const Kernel& kernel, const std::vector<float>& params,
+                                                  const TextureView& view, const std::vector<std::vector<int>>& images,
+                                                  const TextureRenderOptions& options) {
   const OutputLayout& layout = kernel.outputs();
-  if (layout.kind != GraphKind::texture || !layout.provides(OutputId::color))
-    return invalid_input("the texture driver needs a texture graph with an output \"color\"");
-  const bool alpha = layout.provides(OutputId::alpha);
-
-  Image image;
-  image.width = view.width;
-  image.height = view.height;
-  image.channels = alpha ? 4 : 3;
-  image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * image.channels, 0.0f);
+  if (layout.kind != GraphKind::texture) return invalid_input("the texture driver needs a texture graph");
+  std::vector<Image> result(images.size());
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    result[k].width = view.width;
+    result[k].height = view.height;
+    result[k].channels = static_cast<int>(images[k].size());
+    result[k].pixels.assign(static_cast<std::size_t>(view.width) * view.height * images[k].size(), 0.0f);
+  }
 
   ThreadBindings bindings(kernel, params.data(), texture_uniforms(view));
 
@@ -117,14 +118,15 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
     OutputBuffers outputs(count, layout);
     bindings.local().run(input.inputs(), outputs.planes(), count);
 
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        float* pixel = image.pixels.data() +
-                       (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
-        for (int c = 0; c < 3; ++c) pixel[c] = outputs.plane(layout.plane(OutputId::color, c))[i];
-        if (alpha) pixel[3] = outputs.plane(layout.plane(OutputId::alpha))[i];
-      }
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      Image& image = result[k];
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * w + x;
+          float* pixel = image.pixels.data() +
+                         (static_cast<std::size_t>(y0 + y) * view.width + (x0 + x)) * image.channels;
+          for (int c = 0; c < image.channels; ++c) pixel[c] = outputs.plane(images[k][static_cast<std::size_t>(c)])[i];
+        }
     }
     return static_cast<long>(count);
   };
@@ -132,7 +134,20 @@ Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& par
                                   options.cancel);
       !done)
     return done.error();
-  return image;
+  return result;
+}
+
+Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
+                             const TextureRenderOptions& options) {
+  const OutputLayout& layout = kernel.outputs();
+  if (layout.kind != GraphKind::texture || !layout.provides(OutputId::color))
+    return invalid_input("the texture driver needs a texture graph with an output \"color\"");
+  std::vector<int> planes = {layout.plane(OutputId::color, 0), layout.plane(OutputId::color, 1),
+                             layout.plane(OutputId::color, 2)};
+  if (layout.provides(OutputId::alpha)) planes.push_back(layout.plane(OutputId::alpha));
+  Result<std::vector<Image>> images = render_texture_outputs(kernel, params, view, {planes}, options);
+  if (!images) return images.error();
+  return std::move(images->front());
 }
 
 Result<std::unique_ptr<FrameRenderer>> prepare_texture(const Graph& graph, const RenderRequest& request) {

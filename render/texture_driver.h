@@ -50,6 +50,13 @@ struct TextureRenderOptions {
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };
 
+// Images of a texture graph's output planes (OutputLayout::plane): image k
+// has a channel per plane of images[k], in that order. bake renders each
+// output of a texture set this way, in one pass over the samples.
+Result<std::vector<Image>> render_texture_outputs(const Kernel& kernel, const std::vector<float>& params,
+                                                  const TextureView& view, const std::vector<std::vector<int>>& images,
+                                                  const TextureRenderOptions& options);
+
 // A texture graph's "color" and optional "alpha" (nodes/output_contract.h).
 Result<Image> render_texture(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                              const TextureRenderOptions& options);

@@ -77,18 +77,19 @@ TEST(CApi, RunsTheKernelOverPlanes) {
   SampleInputs planes;
   for (std::size_t i = 0; i < inputs.size(); ++i) planes.planes[i] = input_pointers[i];
   std::vector<std::vector<float>> expected(3, std::vector<float>(count));
-  std::vector<float*> expected_pointers = {expected[0].data(), expected[1].data(), expected[2].data(), nullptr};
+  std::vector<float*> expected_pointers(9, nullptr);  // a plane for each of the contract's
+  for (int c = 0; c < 3; ++c) expected_pointers[static_cast<std::size_t>(c)] = expected[static_cast<std::size_t>(c)].data();
   reference->bind(loaded->params.data(), {})->run(planes, expected_pointers.data(), count);
 
   for (shadetree_backend backend : {SHADETREE_JIT, SHADETREE_INTERPRETER}) {
     GraphHandle handle;
     ASSERT_EQ(shadetree_load(marble.c_str(), backend, &handle.graph), SHADETREE_OK);
     ASSERT_EQ(shadetree_set_param(handle.graph, "scale", "9"), SHADETREE_OK);
-    ASSERT_EQ(shadetree_output_plane_count(handle.graph), 4);  // color and alpha
+    ASSERT_EQ(shadetree_output_plane_count(handle.graph), 9);  // color, alpha, height, normal, roughness
     EXPECT_EQ(shadetree_output_plane(handle.graph, "alpha", 0), 3);
     EXPECT_EQ(shadetree_output_plane(handle.graph, "density", 0), -1) << "not a texture output";
     std::vector<std::vector<float>> outputs(3, std::vector<float>(count, -1.0f));
-    std::vector<float*> output_pointers(4, nullptr);
+    std::vector<float*> output_pointers(9, nullptr);
     for (int c = 0; c < 3; ++c) output_pointers[shadetree_output_plane(handle.graph, "color", c)] = outputs[c].data();
     ASSERT_EQ(shadetree_run(handle.graph, 0.0f, input_pointers.data(), output_pointers.data(), count), SHADETREE_OK)
         << shadetree_last_error();

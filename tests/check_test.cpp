@@ -113,7 +113,7 @@ TEST(Check, ReportsMissingOutputs) {
 
 TEST(Check, OutputsFollowTheKindsContract) {
   EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p", "colour": "p")")),
-            "error: g.json: \"colour\" is not an output of texture graphs (color, alpha)");
+            "error: g.json: \"colour\" is not an output of texture graphs (color, alpha, height, normal, roughness)");
   EXPECT_EQ(diagnose(graph_text(R"({"id": "p", "op": "P"})", R"("color": "p", "density": "p")", "", "surface")),
             "error: g.json: \"density\" is not an output of surface graphs (color, normal, specular, roughness, "
             "opacity, emission)");

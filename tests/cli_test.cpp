@@ -317,6 +317,68 @@ TEST_F(Cli, VoxelizeWritesAVdbFileOrExitsWithTwo) {
   EXPECT_EQ(files(), std::vector<std::string>{});
 }
 
+// bake writes each map the graph gives (the normal derived from its
+// height), 16-bit PNGs by default, and a sidecar naming them; with
+// --normal-convention directx the green channel of the normal map flips.
+TEST_F(Cli, BakeWritesATextureSetWithItsSidecar) {
+  const std::string stones = gallery + "tileable_stones.json";
+  CommandResult run = shadetree("bake " + stones + " -o " + directory_.string() + " --size 32x32 --domain 0,0,4,4");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("4 maps of 32x32 (color, height, normal, roughness), tileable"), std::string::npos) << run.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"tileable_stones.json", "tileable_stones_color.png",
+                                               "tileable_stones_height.png", "tileable_stones_normal.png",
+                                               "tileable_stones_roughness.png"}));
+  const nlohmann::json sidecar = nlohmann::json::parse(read_text(directory_ / "tileable_stones.json"));
+  EXPECT_EQ(sidecar["tileable"], true);
+  EXPECT_EQ(sidecar["maps"]["normal"]["convention"], "opengl");
+  EXPECT_EQ(sidecar["maps"]["normal"]["from_height"]["strength"], 1.0);
+  EXPECT_EQ(sidecar["maps"]["height"]["units"], "P");
+  Result<Image> opengl = read_image((directory_ / "tileable_stones_normal.png").string());
+  ASSERT_TRUE(opengl.ok());
+  EXPECT_EQ(opengl->channels, 3);
+
+  run = shadetree("bake " + stones + " -o " + directory_.string() +
+                  " --size 32x32 --domain 0,0,4,4 --maps normal --normal-convention directx --name dx --format exr");
+  ASSERT_EQ(run.status, 0) << run.err;
+  Result<Image> directx = read_image((directory_ / "dx_normal.exr").string());
+  ASSERT_TRUE(directx.ok());
+  for (std::size_t i = 0; i < directx->pixels.size(); i += 3) {
+    EXPECT_NEAR(directx->pixels[i], opengl->pixels[i], 1.0f / 65535 + 1e-6f);
+    EXPECT_NEAR(directx->pixels[i + 1], 1.0f - opengl->pixels[i + 1], 1.0f / 65535 + 1e-6f);
+  }
+  // Over a domain that is not a whole number of periods, the set does not tile.
+  run = shadetree("bake " + stones + " -o " + directory_.string() + " --size 32x32 --domain 0,0,3,3 --name part --maps color");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("not tileable"), std::string::npos) << run.err;
+}
+
+TEST_F(Cli, BakeRefusesBadRequestsInOneLineAndWritesNothing) {
+  const fs::path out = directory_ / "set";
+  fs::create_directory(out);
+  const std::string stones = gallery + "tileable_stones.json -o " + out.string();
+  const std::pair<std::string, int> cases[] = {
+      {gallery + "noisy_sphere.json -o " + out.string(), 2},           // not a texture graph
+      {gallery + "marble.json -o " + out.string() + " --maps height", 2},  // an output it does not give
+      {stones + " --maps colour", 2},
+      {stones + " --size 0x4", 2},
+      {stones + " --size 100000x4", 2},
+      {stones + " --domain 4,0,0,4", 2},
+      {stones + " --domain 0,0,nan,4", 2},
+      {stones + " --normal-strength -1", 2},
+      {stones + " --normal-strength inf", 2},
+      {stones + " --format tiff", 2},
+      {gallery + "tileable_stones.json -o " + (directory_ / "absent").string(), 1},
+      {gallery + "tileable_stones.json -o " + gallery + "marble.json", 1},
+  };
+  for (const auto& [arguments, status] : cases) {
+    const bool sized = arguments.find("--size") != std::string::npos;
+    const CommandResult bad = shadetree("bake " + arguments + (sized ? "" : " --size 8x8"));
+    EXPECT_EQ(bad.status, status) << arguments << ": " << bad.err;
+    EXPECT_EQ(line_count(bad.err), 1) << arguments << ": " << bad.err;
+  }
+  EXPECT_TRUE(fs::is_empty(out));
+}
+
 TEST_F(Cli, RenderWritesTheImageAndASummary) {
   const std::string out = (directory_ / "marble.png").string();
   const CommandResult run = shadetree("render " + gallery + "marble.json -o " + out + " --size 32x16 --threads 2");
