@@ -20,6 +20,7 @@
 #include "io/image_output.h"
 #include "io/output_file.h"
 #include "pipeline/compile_graph.h"
+#include "graph/derived_normals.h"
 #include "render/texture_bake.h"
 #include "schedule/progress.h"
 

@@ -9,6 +9,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "graph/derived_normals.h"
 #include "io/graph_files.h"
 #include "io/image_output.h"
 #include "pipeline/compile_graph.h"
@@ -36,6 +37,7 @@ struct RenderArguments {
   std::vector<std::string> search_paths;
   std::optional<float> step;
   bool jitter = false;
+  std::string normals = "probes";
 };
 
 std::string milliseconds_text(double milliseconds) {
@@ -61,6 +63,7 @@ Result<RenderRequest> render_request(const RenderArguments& arguments) {
                                                                        : ShadowMode::cached;
   request.step = arguments.step;
   request.jitter = arguments.jitter;
+  request.exact_normals = arguments.normals == "exact";
   request.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
   request.search_paths = arguments.search_paths;
   return request;
@@ -123,6 +126,21 @@ ExitStatus render(const RenderArguments& arguments) {
   const Kernel& chosen = tiered ? *tiered : **kernel;
   Result<RenderRequest> request = render_request(arguments);
   if (!request) return report(request.error());
+  // --normals exact: a second kernel, the graph with its density's normal.
+  std::unique_ptr<Kernel> normal_kernel;
+  if (request->exact_normals && loaded->graph->kind == GraphKind::volume) {
+    Result<LoadedGraph> with_normal = compile_graph(with_normal_from_density(*loaded->graph), arguments.assignments,
+                                                    graph_files(arguments.search_paths));
+    if (!with_normal) return report(with_normal.error());
+    if (arguments.backend == "tiered") {
+      normal_kernel = make_tiered_kernel(with_normal->ir, arguments.width);
+    } else {
+      Result<std::unique_ptr<Kernel>> made = make_kernel(arguments.backend, with_normal->ir, arguments.width);
+      if (!made) return report(made.error());
+      normal_kernel = std::move(*made);
+    }
+    request->normal_kernel = normal_kernel.get();
+  }
   Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded->graph, *request);
   if (!renderer) return report(renderer.error());
   if (!arguments.object.empty() && loaded->graph->render.scene)
@@ -200,6 +218,10 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
                       "bounds' diagonal / 256)");
   command->add_flag("--jitter", arguments->jitter,
                     "volume graphs: start each ray at a random fraction of a step (noise instead of banding)");
+  command->add_option("--normals", arguments->normals,
+                      "volume graphs: light soft samples by the density's gradient from probes (two samples a "
+                      "step off, Perlin & Hoffert 1989, the default) or exact (its derivative, one sample)")
+      ->check(CLI::IsMember({"probes", "exact"}));
   command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
 }
 

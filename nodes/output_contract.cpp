@@ -27,6 +27,8 @@ constexpr OutputSpec volume_outputs[] = {
     {OutputId::color, "color", Type::color, false, "colour of the sample (a transfer function of density)"},
     {OutputId::opacity, "opacity", Type::float_, false, "opacity per reference step (default: the density)"},
     {OutputId::ior, "ior", Type::float_, false, "refractive index, for refraction where it changes"},
+    {OutputId::normal, "normal", Type::vec3, false,
+     "the lighting normal where the density is soft (default: the density's, -grad d / |grad d|)"},
 };
 
 constexpr OutputSpec environment_outputs[] = {

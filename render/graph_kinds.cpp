@@ -17,7 +17,7 @@ constexpr GraphKindDriver drivers[] = {
     {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr, texture_sample_at},
     {GraphKind::surface, option_samples_per_pixel | option_object | option_shadows, "rendering", "samples", true,
      prepare_surface, nullptr, texture_sample_at},
-    {GraphKind::volume, option_shadows | option_step | option_jitter, "marching", "rays", true, prepare_volume,
+    {GraphKind::volume, option_shadows | option_step | option_jitter | option_normals, "marching", "rays", true, prepare_volume,
      volume_thumbnail, texture_sample_at},
     {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr,
      environment_sample_at},
@@ -33,7 +33,8 @@ constexpr std::pair<RenderOption, const char*> option_names[] = {{option_samples
                                                                  {option_object, "--object"},
                                                                  {option_shadows, "--shadows"},
                                                                  {option_step, "--step"},
-                                                                 {option_jitter, "--jitter"}};
+                                                                 {option_jitter, "--jitter"},
+                                                                 {option_normals, "--normals"}};
 
 // "surface or volume": the kinds whose drivers take `option`.
 std::string kinds_with_option(RenderOption option) {
@@ -49,7 +50,7 @@ unsigned RenderRequest::options() const {
   const auto bit = [](bool set, RenderOption option) { return set ? static_cast<unsigned>(option) : 0u; };
   return bit(samples_per_pixel != 1, option_samples_per_pixel) | bit(!object.empty(), option_object) |
          bit(shadows != ShadowMode::cached, option_shadows) | bit(step.has_value(), option_step) |
-         bit(jitter, option_jitter);
+         bit(jitter, option_jitter) | bit(exact_normals, option_normals);
 }
 
 std::string FrameReport::summary() const {

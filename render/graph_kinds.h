@@ -30,6 +30,7 @@ enum RenderOption : unsigned {
   option_shadows = 4,            // --shadows exact or off (--no-shadows)
   option_step = 8,               // --step
   option_jitter = 16,            // --jitter
+  option_normals = 32,           // --normals exact
 };
 
 // How shaded samples find what reaches them of each light. A surface's
@@ -53,6 +54,10 @@ struct RenderRequest {
   int lane_width = 0;                       // the kernel's vector width, for the lane figures only
   std::vector<std::string> search_paths;    // folders besides the graph's own that its scene may read
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (schedule/image_tiles.h)
+  // volume: light soft samples by the density's exact gradient, from
+  // normal_kernel (VolumeRenderOptions::normal_kernel), not two probes
+  bool exact_normals = false;
+  const Kernel* normal_kernel = nullptr;
 
   // The RenderOption bits this request sets.
   unsigned options() const;

@@ -7,22 +7,6 @@
 namespace shadetree {
 namespace {
 
-InputValue node_value(const std::string& node, const std::string& output = {}) {
-  InputValue value;
-  value.kind = InputValue::Kind::node;
-  value.node = node;
-  value.output = output;
-  value.text = output.empty() ? node : node + "." + output;
-  return value;
-}
-
-InputValue number_value(float number) {
-  InputValue value;
-  value.numbers = {number};
-  value.text = std::to_string(number);
-  return value;
-}
-
 // The output planes of `output` in the kernel's layout.
 std::vector<int> planes_of(const OutputLayout& layout, OutputId output) {
   std::vector<int> planes;
@@ -59,28 +43,6 @@ bool wraps_around(const Kernel& kernel, const std::vector<float>& params, const 
 }
 
 }  // namespace
-
-Graph with_normal_from_height(Graph graph, float strength) {
-  auto declared = [&](const char* name) {
-    for (const OutputDecl& output : graph.outputs)
-      if (output.name == name) return &output;
-    return static_cast<const OutputDecl*>(nullptr);
-  };
-  const OutputDecl* height = declared("height");
-  if (!height || declared("normal")) return graph;
-  // Node ids may not hold a '.', so these cannot meet the graph's own.
-  auto node = [&](const std::string& id, const std::string& op, std::vector<std::pair<std::string, InputValue>> inputs) {
-    graph.nodes.push_back(Node{"bake." + id, op, std::move(inputs), {}});
-  };
-  node("gradient", "gradient", {{"x", height->source}});
-  node("slopes", "split", {{"v", node_value("bake.gradient")}});
-  node("across", "mul", {{"a", node_value("bake.slopes", "x")}, {"b", number_value(-strength)}});
-  node("up", "mul", {{"a", node_value("bake.slopes", "y")}, {"b", number_value(-strength)}});
-  node("tilted", "vec3", {{"x", node_value("bake.across")}, {"y", node_value("bake.up")}, {"z", number_value(1.0f)}});
-  node("normal", "normalize", {{"v", node_value("bake.tilted")}});
-  graph.outputs.push_back(OutputDecl{"normal", node_value("bake.normal")});
-  return graph;
-}
 
 Result<BakedSet> bake_texture_set(const Kernel& kernel, const std::vector<float>& params, const TextureView& view,
                                   const std::vector<OutputId>& outputs, const TextureRenderOptions& options) {

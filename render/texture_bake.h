@@ -2,13 +2,13 @@
 // at one size, one image each, as engines take them: colour, alpha,
 // height, roughness, and a tangent-space normal map, which where the graph
 // gives a height and no normal comes from the exact gradient of the
-// height (ir/differentiate.h), not from differences of the baked pixels.
+// height (graph/derived_normals.h), not from differences of the baked
+// pixels.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "graph/graph.h"
 #include "nodes/output_contract.h"
 #include "render/texture_driver.h"
 
@@ -17,11 +17,6 @@ namespace shadetree {
 // The texture outputs a set can hold, in the order bake writes them.
 inline constexpr OutputId bakeable_outputs[] = {OutputId::color, OutputId::alpha, OutputId::height, OutputId::normal,
                                                 OutputId::roughness};
-
-// `graph` (a texture graph) with a "normal" output where it has a "height"
-// and no "normal": normalize(-strength dh/dx, -strength dh/dy, 1), +z out
-// of the texture, x along its columns and y up its rows.
-Graph with_normal_from_height(Graph graph, float strength);
 
 struct BakedMap {
   OutputId output;

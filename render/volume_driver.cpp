@@ -129,14 +129,16 @@ struct ObjectSample {
 // statistics.
 struct TileScratch {
   TileScratch(std::size_t packet, std::size_t lights, const Kernel& kernel, float step, BoundKernel& bound,
-              std::atomic<long long>& kernel_ns)
+              BoundKernel* normal_bound, std::atomic<long long>& kernel_ns)
       : samples(packet, kernel, step),
         probes(2 * packet, kernel, step),
         shadows(packet * std::max<std::size_t>(lights, 1), kernel, step),
         bound(bound),
+        normal_bound(normal_bound),
         kernel_ns(kernel_ns) {}
   Batch samples, probes, shadows;
   BoundKernel& bound;
+  BoundKernel* normal_bound;  // of VolumeRenderOptions::normal_kernel, where there is one
   std::atomic<long long>& kernel_ns;
   TileCounts counts;
 };
@@ -158,6 +160,7 @@ class Marcher {
         lit_(scene.desc().lighting == Lighting::lit),
         shadows_(lit_ && shadows && !scene.lights().empty()),
         refracts_(kernel.outputs().provides(OutputId::ior)),
+        own_normals_(kernel.outputs().provides(OutputId::normal)),
         occupancy_(occupancy),
         grids_(grids),
         options_(options),
@@ -172,8 +175,8 @@ class Marcher {
   }
 
   // The tile's pixels, RGB, row after row.
-  void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, std::vector<glm::vec3>& pixels,
-                   TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+  void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, BoundKernel* normal_bound,
+                   std::vector<glm::vec3>& pixels, TileCounts& counts, std::atomic<long long>& kernel_ns) const {
     const std::size_t lights = scene_.lights().size();
     pixels.resize(static_cast<std::size_t>(tile.width) * tile.height);
     for (int y = 0; y < tile.height; ++y)
@@ -203,7 +206,7 @@ class Marcher {
         marching.backdrop = hit;
         marching.step_length = step_;
         if (jitter_) marching.jitter = unit_float(pixel_hash(column, row, 0));
-        marching.segment = needs_gradients() ? -1 : 0;
+        marching.segment = probes_gradients() ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
     if (rays.empty() && objects.empty()) return;
@@ -212,7 +215,7 @@ class Marcher {
     const std::size_t tile_rays = rays.size() + objects.size();
     const std::size_t packet = std::min(
         tile_rays, options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : tile_rays);
-    TileScratch scratch(packet, lights, kernel_, step_, bound, kernel_ns);
+    TileScratch scratch(packet, lights, kernel_, step_, bound, normal_bound, kernel_ns);
     for (std::size_t first = 0; first < rays.size(); first += packet) {
       const std::size_t last = std::min(rays.size(), first + packet);
       std::vector<MarchingRay*> live;
@@ -351,6 +354,9 @@ class Marcher {
 
   // Gradients serve the lighting and the refraction.
   bool needs_gradients() const { return lit_ || refracts_; }
+  // From the previous sample and two probes, which needs a sample before
+  // the entry for the first gradient.
+  bool probes_gradients() const { return needs_gradients() && !own_normals_ && !options_.normal_kernel; }
 
   // 1989 blue glass: where the refractive index of a sample differs from
   // the one the ray travels in, the ray bends by Snell's law about the
@@ -472,11 +478,73 @@ class Marcher {
     return transmittance;
   }
 
+  // normals[soft[k]] = the unit normal output of `batch`, run by a kernel
+  // of `layout`, at sample at(k), where it has a direction.
+  template <class At>
+  void take_normals(const Batch& batch, const OutputLayout& layout, const std::vector<std::size_t>& soft, At at,
+                    std::vector<glm::vec3>& normals) const {
+    for (std::size_t k = 0; k < soft.size(); ++k) {
+      glm::vec3 normal;
+      for (int c = 0; c < 3; ++c) normal[c] = batch.outputs.plane(layout.plane(OutputId::normal, c))[at(k)];
+      const float length = glm::length(normal);
+      if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = normal / length;
+    }
+  }
+
+  // The density's exact gradient (graph/derived_normals.h): one sample of
+  // the normal kernel per soft sample.
+  void exact_normals(const std::vector<MarchingRay*>& live, const std::vector<std::size_t>& soft,
+                     std::vector<glm::vec3>& normals, TileScratch& scratch) const {
+    if (soft.empty()) return;
+    Batch& batch = scratch.probes;
+    for (std::size_t k = 0; k < soft.size(); ++k) {
+      const MarchingRay& ray = *live[soft[k]];
+      store3(batch.inputs, GlobalId::P, k, ray.at(ray.sample_t()));
+      store3(batch.inputs, GlobalId::I, k, ray.frame.along);
+    }
+    {
+      StageClock clock(scratch.kernel_ns);
+      scratch.normal_bound->run(batch.inputs.inputs(), batch.outputs.planes(), soft.size());
+    }
+    scratch.counts.density_samples += static_cast<long>(soft.size());
+    scratch.counts.gradient_samples += static_cast<long>(soft.size());
+    scratch.counts.kernel_calls += 1;
+    scratch.counts.lane_slots += static_cast<long>(lane_slots_of(soft.size(), options_.lane_width));
+    take_normals(batch, options_.normal_kernel->outputs(), soft, [](std::size_t k) { return k; }, normals);
+  }
+
+  // 1989 section 3.1: the gradient from the previous sample along the ray
+  // and two probes off it (render/density_gradient.h).
+  void probed_normals(const std::vector<MarchingRay*>& live, const std::vector<std::size_t>& soft,
+                      std::vector<glm::vec3>& normals, TileScratch& scratch) const {
+    if (soft.empty()) return;
+    Batch& probes = scratch.probes;
+    for (std::size_t k = 0; k < soft.size(); ++k) {
+      const MarchingRay& ray = *live[soft[k]];
+      const glm::vec3 x = ray.at(ray.sample_t());
+      store3(probes.inputs, GlobalId::P, 2 * k, x + step_ * ray.frame.across_v);
+      store3(probes.inputs, GlobalId::P, 2 * k + 1, x + step_ * ray.frame.across_w);
+      store3(probes.inputs, GlobalId::I, 2 * k, ray.frame.along);
+      store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
+    }
+    run(probes, 2 * soft.size(), scratch);
+    scratch.counts.gradient_samples += static_cast<long>(2 * soft.size());
+    for (std::size_t k = 0; k < soft.size(); ++k) {
+      const MarchingRay& ray = *live[soft[k]];
+      const float t = ray.sample_t();
+      const glm::vec3 gradient = density_gradient(
+          ray.frame, GradientSamples{output(scratch.samples, OutputId::density, soft[k]), ray.previous_density,
+                                     std::max(t - ray.previous_t, 1e-30f), output(probes, OutputId::density, 2 * k),
+                                     output(probes, OutputId::density, 2 * k + 1), step_});
+      const float length = glm::length(gradient);
+      if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = -gradient / length;
+    }
+  }
+
   // Every live ray takes its next sample; rays that leave the volume or
   // become opaque are dropped.
   void march_once(std::vector<MarchingRay*>& live, TileScratch& scratch) const {
     Batch& samples = scratch.samples;
-    Batch& probes = scratch.probes;
     if (occupancy_)
       for (MarchingRay* ray : live) skip_empty_space(*ray, scratch.counts);
     const std::size_t count = live.size();
@@ -487,45 +555,23 @@ class Marcher {
     }
     run(samples, count, scratch);
 
-    // 1989 section 3.1: where 0 < density < 1, the gradient from the
-    // previous sample along the ray and two probes off it
-    // (render/density_gradient.h).
-    std::vector<std::size_t> soft;
+    // The outward normal where 0 < density < 1 (the samples lit by their
+    // normal); elsewhere the normal faces the viewer.
+    std::vector<glm::vec3> normals;
     if (needs_gradients()) {
+      std::vector<std::size_t> soft;
       for (std::size_t i = 0; i < count; ++i) {
         const float density = output(samples, OutputId::density, i);
         if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f) soft.push_back(i);
       }
-      for (std::size_t k = 0; k < soft.size(); ++k) {
-        const MarchingRay& ray = *live[soft[k]];
-        const glm::vec3 x = ray.at(ray.sample_t());
-        store3(probes.inputs, GlobalId::P, 2 * k, x + step_ * ray.frame.across_v);
-        store3(probes.inputs, GlobalId::P, 2 * k + 1, x + step_ * ray.frame.across_w);
-        store3(probes.inputs, GlobalId::I, 2 * k, ray.frame.along);
-        store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
-      }
-      if (!soft.empty()) {
-        run(probes, 2 * soft.size(), scratch);
-        scratch.counts.gradient_samples += static_cast<long>(2 * soft.size());
-      }
-    }
-
-    // The outward normal, -gradient normalized, where it was probed;
-    // elsewhere the normal faces the viewer.
-    std::vector<glm::vec3> normals;
-    if (needs_gradients()) {
       normals.resize(count);
       for (std::size_t i = 0; i < count; ++i) normals[i] = -live[i]->frame.along;
-      for (std::size_t k = 0; k < soft.size(); ++k) {
-        const MarchingRay& ray = *live[soft[k]];
-        const float t = ray.sample_t();
-        const glm::vec3 gradient = density_gradient(
-            ray.frame, GradientSamples{output(samples, OutputId::density, soft[k]), ray.previous_density,
-                                       std::max(t - ray.previous_t, 1e-30f), output(probes, OutputId::density, 2 * k),
-                                       output(probes, OutputId::density, 2 * k + 1), step_});
-        const float length = glm::length(gradient);
-        if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = -gradient / length;
-      }
+      if (own_normals_)
+        take_normals(samples, layout_, soft, [&](std::size_t k) { return soft[k]; }, normals);
+      else if (scratch.normal_bound)
+        exact_normals(live, soft, normals, scratch);
+      else
+        probed_normals(live, soft, normals, scratch);
     }
     const std::vector<float> transmittance = light_transmittance(live, normals, scratch);
 
@@ -578,7 +624,7 @@ class Marcher {
   const Scene& scene_;
   glm::vec3 lo_, hi_;
   float step_, reference_step_, shadow_step_;
-  bool jitter_, lit_, shadows_, refracts_;
+  bool jitter_, lit_, shadows_, refracts_, own_normals_;
   const OccupancyGrid* occupancy_;  // null: every sample is marched
   const LightGrids& grids_;
   const VolumeRenderOptions& options_;
@@ -794,6 +840,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   image.channels = 3;
   image.pixels.assign(static_cast<std::size_t>(view.width) * view.height * 3, 0.0f);
   ThreadBindings bindings(kernel, params.data(), volume_uniforms(view.frame, step));
+  std::optional<ThreadBindings> normal_bindings;
+  if (options.normal_kernel) normal_bindings.emplace(*options.normal_kernel, params.data(), volume_uniforms(view.frame, step));
   std::atomic<long long> tile_ns{0}, kernel_ns{0}, grid_kernel_ns{0};
   std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, shadow_lookups{0},
       skipped_samples{0}, kernel_calls{0}, lane_slots{0};
@@ -830,7 +878,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         StageClock clock(tile_ns);
         std::vector<glm::vec3> pixels;
         TileCounts counts;
-        marcher.render_tile(tile, camera, bindings.local(), pixels, counts, kernel_ns);
+        marcher.render_tile(tile, camera, bindings.local(), normal_bindings ? &normal_bindings->local() : nullptr,
+                            pixels, counts, kernel_ns);
         for (int y = 0; y < tile.height; ++y)
           for (int x = 0; x < tile.width; ++x) {
             float* pixel =
@@ -899,6 +948,9 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.skip_empty_space = request.shadows != ShadowMode::exact;
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;
+  if (request.exact_normals && !request.normal_kernel)
+    return invalid_input("exact normals need the kernel of the graph with its normal (graph/derived_normals.h)");
+  options.normal_kernel = request.exact_normals ? request.normal_kernel : nullptr;
   return std::unique_ptr<FrameRenderer>(std::make_unique<VolumeFrames>(std::move(*scene), std::move(*environment), volume, view, options));
 }
 

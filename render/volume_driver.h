@@ -47,6 +47,11 @@ struct VolumeRenderOptions {
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
   const Image* background = nullptr;  // RGB per pixel (an environment the camera sees); else the scene's colour
+  // A kernel of the same graph that also gives the density's normal
+  // (graph/derived_normals.h: its exact gradient), run once per soft
+  // sample instead of two probes; null: the probes. A graph that gives its
+  // own normal is lit by it.
+  const Kernel* normal_kernel = nullptr;
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
 };

@@ -263,6 +263,29 @@ TEST_F(Cli, ShadowModesOfTheRayMarcher) {
       << texture.err;
 }
 
+// --normals exact halves the gradient samples (one sample of the normal
+// kernel instead of two probes); it is for volume graphs only.
+TEST_F(Cli, NormalsOfTheRayMarcher) {
+  const std::string out = (directory_ / "sphere.png").string();
+  const std::string render = "render " + gallery + "noisy_sphere.json -o " + out + " --size 24x24 --step 0.05";
+  auto gradient_samples = [](const std::string& err) {
+    const auto end = err.find(" for gradients");
+    const auto start = err.rfind('(', end);
+    return std::stol(err.substr(start + 1, end - start - 1));
+  };
+  const CommandResult probes = shadetree(render + " --normals probes");
+  const CommandResult exact = shadetree(render + " --normals exact");
+  ASSERT_EQ(probes.status, 0) << probes.err;
+  ASSERT_EQ(exact.status, 0) << exact.err;
+  EXPECT_EQ(gradient_samples(exact.err) * 2, gradient_samples(probes.err)) << exact.err << probes.err;
+  for (const std::string& bad : {render + " --normals analytic",
+                                 "render " + gallery + "marble.json -o " + out + " --size 8x8 --normals exact"}) {
+    const CommandResult run = shadetree(bad);
+    EXPECT_EQ(run.status, 2) << bad << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+  }
+}
+
 TEST_F(Cli, BadVolumesExitWithTwoOneLineAndNoOutput) {
   const std::string out = (directory_ / "out.png").string();
   const std::string bounded = R"("volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}})";

@@ -10,6 +10,7 @@
 #include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
+#include "graph/derived_normals.h"
 #include "render/texture_bake.h"
 #include "support/graph_text.h"
 
