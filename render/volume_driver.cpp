@@ -100,7 +100,13 @@ using LightGrids = std::vector<std::optional<TransmittanceGrid>>;
 struct TileCounts {
   long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, shadow_lookups = 0,
        skipped_samples = 0, kernel_calls = 0, lane_slots = 0;
+  long long gradient_ns = 0;  // in the kernel calls of the gradients (probes or normal kernel)
 };
+
+// Nanoseconds since `start`.
+long long nanoseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count();
+}
 
 // A ray from a shaded sample toward a light, through the volume.
 struct ShadowRay {
@@ -237,6 +243,7 @@ class Marcher {
     const TileCounts& marched = scratch.counts;
     counts.density_samples += marched.density_samples;
     counts.gradient_samples += marched.gradient_samples;
+    counts.gradient_ns += marched.gradient_ns;
     counts.shadow_samples += marched.shadow_samples;
     counts.shadow_lookups += marched.shadow_lookups;
     counts.skipped_samples += marched.skipped_samples;
@@ -502,10 +509,12 @@ class Marcher {
       store3(batch.inputs, GlobalId::P, k, ray.at(ray.sample_t()));
       store3(batch.inputs, GlobalId::I, k, ray.frame.along);
     }
+    const auto start = std::chrono::steady_clock::now();
     {
       StageClock clock(scratch.kernel_ns);
       scratch.normal_bound->run(batch.inputs.inputs(), batch.outputs.planes(), soft.size());
     }
+    scratch.counts.gradient_ns += nanoseconds_since(start);
     scratch.counts.density_samples += static_cast<long>(soft.size());
     scratch.counts.gradient_samples += static_cast<long>(soft.size());
     scratch.counts.kernel_calls += 1;
@@ -527,7 +536,9 @@ class Marcher {
       store3(probes.inputs, GlobalId::I, 2 * k, ray.frame.along);
       store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
     }
+    const auto start = std::chrono::steady_clock::now();
     run(probes, 2 * soft.size(), scratch);
+    scratch.counts.gradient_ns += nanoseconds_since(start);
     scratch.counts.gradient_samples += static_cast<long>(2 * soft.size());
     for (std::size_t k = 0; k < soft.size(); ++k) {
       const MarchingRay& ray = *live[soft[k]];
@@ -764,11 +775,14 @@ class VolumeFrames : public FrameRenderer {
                       {"bounds_s", stats.occupancy_seconds},
                       {"lane_utilisation", stats.lane_utilisation()},
                       {"kernel_s", stats.kernel_seconds},
+                      {"gradient_s", stats.gradient_seconds},
                       {"march_s", stats.march_seconds}};
     char text[512];
     int length = std::snprintf(text, sizeof text,
-                               "%dx%d, %ld rays, %ld density samples (%ld for gradients, %ld for shadow rays)",
+                               "%dx%d, %ld rays, %ld density samples (%ld for gradients %s in %.3f s, %ld for "
+                               "shadow rays)",
                                view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
+                               options.normal_kernel ? "exactly" : "by probes", stats.gradient_seconds,
                                stats.shadow_samples);
     if (stats.empty_fraction > 0.0)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
@@ -843,6 +857,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   std::optional<ThreadBindings> normal_bindings;
   if (options.normal_kernel) normal_bindings.emplace(*options.normal_kernel, params.data(), volume_uniforms(view.frame, step));
   std::atomic<long long> tile_ns{0}, kernel_ns{0}, grid_kernel_ns{0};
+  std::atomic<long long> gradient_ns{0};
   std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, shadow_lookups{0},
       skipped_samples{0}, kernel_calls{0}, lane_slots{0};
 
@@ -890,6 +905,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         rays += counts.rays;
         density_samples += counts.density_samples;
         gradient_samples += counts.gradient_samples;
+        gradient_ns += counts.gradient_ns;
         shadow_samples += counts.shadow_samples;
         shadow_lookups += counts.shadow_lookups;
         skipped_samples += counts.skipped_samples;
@@ -906,6 +922,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     stats->rays = rays;
     stats->density_samples = density_samples;
     stats->gradient_samples = gradient_samples;
+    stats->gradient_seconds = seconds(gradient_ns);
     stats->shadow_samples = shadow_samples;
     stats->shadow_lookups = shadow_lookups;
     stats->skipped_samples = skipped_samples;

@@ -63,7 +63,8 @@ struct VolumeRenderStats {
   double kernel_seconds = 0;  // the graph
   long rays = 0;              // that met the volume
   long density_samples = 0;   // graph evaluations: march samples and gradient probes
-  long gradient_samples = 0;  // of those, the gradient probes
+  long gradient_samples = 0;  // of those, the gradient probes (or the normal kernel's samples)
+  double gradient_seconds = 0;  // in their kernel calls
   long shadow_samples = 0;    // and the samples of shadow rays
   long grid_samples = 0;      // and the samples that filled the lights' transmittance grids
   long shadow_lookups = 0;    // of those grids, instead of shadow rays

@@ -375,6 +375,37 @@ TEST_F(Cli, BakeWritesATextureSetWithItsSidecar) {
   EXPECT_NE(run.err.find("not tileable"), std::string::npos) << run.err;
 }
 
+// The files bake writes, read back: the normal map is the slope of the
+// height map (central differences over its pixels, on a smooth height).
+TEST_F(Cli, ABakedNormalMapReadBackIsTheSlopeOfTheBakedHeightMap) {
+  const fs::path graph = write("hills.json", R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+      "name": "hills", "nodes": [{"id": "p", "op": "P"}, {"id": "n", "op": "pnoise", "in": {"p": "p"}},
+        {"id": "h", "op": "mul", "in": {"a": "n", "b": 0.25}}],
+      "outputs": {"color": "h", "height": "h"}})");
+  const CommandResult run =
+      shadetree("bake " + graph.string() + " -o " + directory_.string() + " --size 128x128 --domain 0,0,4,4 --format exr");
+  ASSERT_EQ(run.status, 0) << run.err;
+  Result<Image> height = read_image((directory_ / "hills_height.exr").string());
+  Result<Image> normal = read_image((directory_ / "hills_normal.exr").string());
+  ASSERT_TRUE(height.ok() && normal.ok());
+  constexpr int size = 128;
+  const double pixel = 4.0 / size;
+  auto h = [&](int row, int column) {
+    return double(height->pixels[static_cast<std::size_t>(((row + size) % size) * size + (column + size) % size)]);
+  };
+  double worst = 0;
+  for (int row = 0; row < size; ++row)
+    for (int column = 0; column < size; ++column) {
+      const double dx = (h(row, column + 1) - h(row, column - 1)) / (2 * pixel);
+      const double dy = -(h(row + 1, column) - h(row - 1, column)) / (2 * pixel);  // rows run down
+      const double length = std::sqrt(dx * dx + dy * dy + 1);
+      const float* encoded = &normal->pixels[static_cast<std::size_t>(row * size + column) * 3];
+      worst = std::max({worst, std::fabs(2 * encoded[0] - 1 + dx / length), std::fabs(2 * encoded[1] - 1 + dy / length),
+                        std::fabs(2 * encoded[2] - 1 - 1 / length)});
+    }
+  EXPECT_LT(worst, 1e-2);
+}
+
 TEST_F(Cli, BakeRefusesBadRequestsInOneLineAndWritesNothing) {
   const fs::path out = directory_ / "set";
   fs::create_directory(out);
