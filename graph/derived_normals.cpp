@@ -53,6 +53,10 @@ Graph with_normal_from_height(Graph graph, float strength) {
 Graph with_normal_from_density(Graph graph) {
   const OutputDecl* density = declared(graph, "density");
   if (!density || declared(graph, "normal")) return graph;
+  // Only the density and its normal: the rest of the graph's work (colour,
+  // opacity) is done once per sample by its own kernel.
+  graph.outputs = {*density};
+  density = &graph.outputs.front();
   add_node(graph, "march.gradient", "gradient", {{"x", density->source}});
   add_node(graph, "march.inward", "normalize", {{"v", node_value("march.gradient")}});
   add_node(graph, "march.normal", "neg", {{"x", node_value("march.inward")}});

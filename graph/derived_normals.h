@@ -14,8 +14,9 @@ namespace shadetree {
 // texture, x along its columns and y up its rows.
 Graph with_normal_from_height(Graph graph, float strength);
 
-// A volume graph with a "normal" output where it has none: the outward
-// normal of its density, -grad d / |grad d| (0 where the gradient is).
+// A volume graph with a "normal" output where it has none, the outward
+// normal of its density, -grad d / |grad d| (0 where the gradient is), and
+// no other output than its density.
 Graph with_normal_from_density(Graph graph);
 
 }  // namespace shadetree
