@@ -9,6 +9,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "schedule/frame_list.h"
 #include "graph/derived_normals.h"
 #include "io/graph_files.h"
 #include "io/image_output.h"
@@ -27,6 +28,8 @@ struct RenderArguments {
   std::vector<std::string> assignments;
   std::optional<float> frame;
   std::string frames;
+  std::string chunk;
+  bool skip_existing = false;
   int threads = 0;
   std::string backend = "tiered";
   int width = 0;
@@ -69,19 +72,6 @@ Result<RenderRequest> render_request(const RenderArguments& arguments) {
   return request;
 }
 
-// "A..B" (inclusive, A <= B, at most max_frames frames).
-constexpr int max_frames = 100000;
-Result<std::pair<int, int>> parse_frame_range(const std::string& text) {
-  int first = 0, last = 0;
-  char dot1 = 0, dot2 = 0, trailing = 0;
-  std::istringstream stream(text);
-  if (!(stream >> first >> dot1 >> dot2 >> last) || dot1 != '.' || dot2 != '.' || (stream >> trailing) ||
-      first > last || first < 0 || last - first >= max_frames)
-    return invalid_input("--frames expects FIRST..LAST with 0 <= FIRST <= LAST and at most " +
-                         std::to_string(max_frames) + " frames, got \"" + text + "\"");
-  return std::pair{first, last};
-}
-
 // out.png -> out.0012.png; out.##.png -> out.12.png (the run of '#' is the
 // field width).
 std::string frame_path(const std::string& pattern, int frame) {
@@ -105,10 +95,21 @@ ExitStatus render(const RenderArguments& arguments) {
   if (arguments.frames.empty()) {
     frames.emplace_back(arguments.frame.value_or(loaded->graph->render.frame), arguments.output);
   } else {
-    Result<std::pair<int, int>> range = parse_frame_range(arguments.frames);
-    if (!range) return report(range.error());
-    for (int frame = range->first; frame <= range->second; ++frame)
-      frames.emplace_back(static_cast<float>(frame), frame_path(arguments.output, frame));
+    Result<std::vector<int>> listed = parse_frame_list(arguments.frames);
+    if (!listed) return report(listed.error());
+    if (!arguments.chunk.empty()) listed = frame_chunk(*listed, arguments.chunk);
+    if (!listed) return report(listed.error());
+    for (int frame : *listed) frames.emplace_back(static_cast<float>(frame), frame_path(arguments.output, frame));
+  }
+  // A resumed sequence: the frames already written stay as they are.
+  if (arguments.skip_existing) {
+    std::error_code ignored;
+    const std::size_t listed = frames.size();
+    std::erase_if(frames, [&](const auto& frame) { return std::filesystem::exists(frame.second, ignored); });
+    if (frames.empty()) {
+      std::fprintf(stderr, "%s: all %zu frames exist already\n", printable(arguments.file).c_str(), listed);
+      return ExitStatus::ok;
+    }
   }
   // Refuse an output we cannot write before spending time on the render.
   Status writable = check_image_path(frames.front().second);
@@ -189,8 +190,15 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--size", arguments->size, "image size WIDTHxHEIGHT (default: the graph's render size)");
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
   add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
-  command->add_option("--frames", arguments->frames, "render frames FIRST..LAST as a numbered sequence")
-      ->excludes("--frame");
+  auto* frames = command->add_option("--frames", arguments->frames,
+                                     "render a numbered sequence: frames and ranges FIRST..LAST or FIRST-LAST, each "
+                                     "with an optional step xS, separated by commas (e.g. 1-240x4)")
+                     ->excludes("--frame");
+  command->add_option("--chunk", arguments->chunk,
+                      "render only the frames of --frames from START to END (START..END or START-END; a farm task)")
+      ->needs(frames);
+  command->add_flag("--skip-existing", arguments->skip_existing,
+                    "leave the frames whose output file exists (resume a sequence)");
   command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->add_option("--backend", arguments->backend,

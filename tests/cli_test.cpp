@@ -148,6 +148,32 @@ TEST_F(Cli, FramesRenderANumberedSequenceFromOneKernel) {
   EXPECT_EQ(shadetree("render " + gallery + "corona.json -o " + pattern + " --frames 5..3").status, 2);
 }
 
+// A farm task: the chunk of a stepped range, padded numbers, and a resumed
+// sequence that renders only the frames not yet written.
+TEST_F(Cli, FarmTasksRenderTheirChunkAndResume) {
+  const std::string pattern = (directory_ / "corona.####.png").string();
+  const std::string shot = "render " + gallery + "corona.json -o " + pattern + " --size 8x8 --frames 1-20x4";
+  CommandResult run = shadetree(shot + " --chunk 5-100");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"corona.0005.png", "corona.0009.png", "corona.0013.png",
+                                               "corona.0017.png"}));
+  const auto written = fs::last_write_time(directory_ / "corona.0009.png");
+  run = shadetree(shot + " --skip-existing");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(files().size(), 5u);
+  EXPECT_EQ(fs::last_write_time(directory_ / "corona.0009.png"), written) << "an existing frame was rendered again";
+  EXPECT_EQ(line_count(run.err), 1) << "one frame left: " << run.err;
+  run = shadetree(shot + " --skip-existing");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("all 5 frames exist already"), std::string::npos) << run.err;
+  for (const std::string& bad : {shot + " --chunk 30-40", shot + " --chunk 3", std::string("render ") + gallery +
+                                 "corona.json -o " + pattern + " --chunk 1-5", shot + "x0"}) {
+    run = shadetree(bad);
+    EXPECT_EQ(run.status, 2) << bad << ": " << run.err;
+    EXPECT_EQ(line_count(run.err), 1) << run.err;
+  }
+}
+
 TEST_F(Cli, BadScenesExitWithTwoOneLineAndNoOutput) {
   const std::string out = (directory_ / "out.png").string();
   const std::string header = R"({"format": "shadetree-graph", "version": 1, "kind": "surface", "nodes": [],
