@@ -107,7 +107,9 @@ ExitStatus render(const RenderArguments& arguments) {
     const std::size_t listed = frames.size();
     std::erase_if(frames, [&](const auto& frame) { return std::filesystem::exists(frame.second, ignored); });
     if (frames.empty()) {
-      std::fprintf(stderr, "%s: all %zu frames exist already\n", printable(arguments.file).c_str(), listed);
+      const std::string done = listed == 1 ? std::string("the output exists already")
+                                           : "all " + std::to_string(listed) + " frames exist already";
+      std::fprintf(stderr, "%s: %s\n", printable(arguments.file).c_str(), done.c_str());
       return ExitStatus::ok;
     }
   }
