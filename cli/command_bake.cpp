@@ -54,10 +54,7 @@ std::string file_stem(const BakeArguments& arguments, const Graph& graph) {
   return stem.empty() ? "texture" : stem;
 }
 
-bool declares(const Graph& graph, OutputId output) {
-  return std::any_of(graph.outputs.begin(), graph.outputs.end(),
-                     [&](const OutputDecl& decl) { return decl.name == output_id_name(output); });
-}
+bool declares(const Graph& graph, OutputId output) { return find_output(graph, output_id_name(output)) != nullptr; }
 
 // --maps (names, comma-separated), or every map the graph gives.
 Result<std::vector<OutputId>> chosen_maps(const std::string& list, const Graph& graph) {

@@ -284,7 +284,7 @@ class CppEmitter {
         name = lifted;
       } else if (components(value) < wanted) {
         const std::string splat = "splat" + std::to_string(i) + "_" + std::to_string(a);
-        out << indent << "const " << (instr.dual ? "lanes::Dual<F>" : lane) << " " << splat << "[" << wanted << "] = {"
+        out << indent << "const " << (instr.dual ? register_type(i) : lane) << " " << splat << "[" << wanted << "] = {"
             << list(std::vector<int>(static_cast<std::size_t>(wanted), 0), [&](int) { return name + "[0]"; })
             << "};\n";
         name = splat;
@@ -314,10 +314,9 @@ class CppEmitter {
     return text + "\n";
   }
 
-  // One instruction outside the op library: a constant, param, global or
-  // component, into `target` (a register of `lane`s).
-  std::string simple_statement(std::size_t i, const std::string& lane, const std::string& target,
-                               bool uniform_pass) const {
+  // One instruction outside the op library: a constant, param, global,
+  // component or gradient, into `target`.
+  std::string simple_statement(std::size_t i, const std::string& target, bool uniform_pass) const {
     const IrInstr& instr = ir_.code[i];
     const int count = components(static_cast<std::int32_t>(i));
     std::vector<std::string> values;
@@ -379,7 +378,7 @@ class CppEmitter {
         out << op_statement(i, "float", "  ", true);
       } else {
         // Arrays are not assignable: one component at a time.
-        std::string statement = simple_statement(i, "float", "const float value[]", true);
+        std::string statement = simple_statement(i, "const float value[]", true);
         out << "  {\n  " << statement << "    std::copy(value, value + " << components(static_cast<std::int32_t>(i))
             << ", u." << value_name(static_cast<std::int32_t>(i)) << ");\n  }\n";
       }
@@ -436,9 +435,9 @@ class CppEmitter {
         if (depth == 0) out << indent << declaration << ";\n";
         out << op_statement(i, "F", indent, false);
       } else if (depth == 0) {
-        out << indent << simple_statement(i, "F", declaration, false).substr(2);
+        out << indent << simple_statement(i, declaration, false).substr(2);
       } else {
-        std::string statement = simple_statement(i, "F", "const " + register_type(i) + " value[]", false);
+        std::string statement = simple_statement(i, "const " + register_type(i) + " value[]", false);
         out << indent << "{\n" << indent << statement << indent << "  std::copy(value, value + "
             << components(static_cast<std::int32_t>(i)) << ", " << name << ");\n" << indent << "}\n";
       }

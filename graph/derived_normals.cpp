@@ -23,12 +23,6 @@ InputValue number_value(float number) {
   return value;
 }
 
-const OutputDecl* declared(const Graph& graph, const char* name) {
-  for (const OutputDecl& output : graph.outputs)
-    if (output.name == name) return &output;
-  return nullptr;
-}
-
 void add_node(Graph& graph, const std::string& id, const std::string& op,
               std::vector<std::pair<std::string, InputValue>> inputs) {
   graph.nodes.push_back(Node{id, op, std::move(inputs), {}});
@@ -37,8 +31,8 @@ void add_node(Graph& graph, const std::string& id, const std::string& op,
 }  // namespace
 
 Graph with_normal_from_height(Graph graph, float strength) {
-  const OutputDecl* height = declared(graph, "height");
-  if (!height || declared(graph, "normal")) return graph;
+  const OutputDecl* height = find_output(graph, "height");
+  if (!height || find_output(graph, "normal")) return graph;
   add_node(graph, "bake.gradient", "gradient", {{"x", height->source}});
   add_node(graph, "bake.slopes", "split", {{"v", node_value("bake.gradient")}});
   add_node(graph, "bake.across", "mul", {{"a", node_value("bake.slopes", "x")}, {"b", number_value(-strength)}});
@@ -51,8 +45,8 @@ Graph with_normal_from_height(Graph graph, float strength) {
 }
 
 Graph with_normal_from_density(Graph graph) {
-  const OutputDecl* density = declared(graph, "density");
-  if (!density || declared(graph, "normal")) return graph;
+  const OutputDecl* density = find_output(graph, "density");
+  if (!density || find_output(graph, "normal")) return graph;
   // Only the density and its normal: the rest of the graph's work (colour,
   // opacity) is done once per sample by its own kernel.
   graph.outputs = {*density};

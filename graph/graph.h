@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "graph/scene.h"
@@ -88,6 +89,13 @@ struct Graph {
   std::vector<OutputDecl> outputs;
   RenderSettings render;
 };
+
+// The output the graph declares as `name`, or null.
+inline const OutputDecl* find_output(const Graph& graph, std::string_view name) {
+  for (const OutputDecl& output : graph.outputs)
+    if (output.name == name) return &output;
+  return nullptr;
+}
 
 
 }  // namespace shadetree

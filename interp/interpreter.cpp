@@ -76,12 +76,16 @@ class InterpretedBinding final : public BoundKernel {
         lane_lists_(static_cast<std::size_t>(kernel.max_region_depth_) * block),
         uniforms_(uniforms) {
     region_stack_.reserve(static_cast<std::size_t>(kernel.max_region_depth_));
-    in_planes_.resize(ir_.code.size() * planes_per_value * max_op_args);
-    out_planes_.resize(ir_.code.size() * planes_per_value);
+    // 3 planes per argument and result component; 4 times as many for a dual.
+    first_plane_.resize(ir_.code.size() + 1);
+    for (std::size_t i = 0; i < ir_.code.size(); ++i)
+      first_plane_[i + 1] = first_plane_[i] + 3 * static_cast<std::size_t>(ir_.code[i].dual ? dual_floats : 1);
+    in_planes_.resize(first_plane_.back() * max_op_args);
+    out_planes_.resize(first_plane_.back());
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       const int parts = instr.dual ? dual_floats : 1;
-      const float** in = &in_planes_[i * planes_per_value * max_op_args];
+      const float** in = &in_planes_[first_plane_[i] * max_op_args];
       for (int a = 0; a < instr.arg_count; ++a)
         for (int c = 0; c < 3; ++c)
           for (int part = 0; part < parts; ++part)
@@ -90,7 +94,7 @@ class InterpretedBinding final : public BoundKernel {
                                                  : registers_.data() + kernel.plane_offset(instr.args[a], c, part);
       for (int c = 0; c < component_count(instr.type); ++c)
         for (int part = 0; part < parts; ++part)
-          out_planes_[i * planes_per_value + c * parts + part] =
+          out_planes_[first_plane_[i] + static_cast<std::size_t>(c * parts + part)] =
               registers_.data() + kernel.plane_offset(static_cast<std::int32_t>(i), c, part);
     }
     params_ = params;
@@ -117,10 +121,10 @@ class InterpretedBinding final : public BoundKernel {
  private:
   // Plane `plane` of the result: component c, or part k of component c of
   // a dual (plane 4c + k).
-  float* out(std::size_t instruction, int plane) { return out_planes_[instruction * planes_per_value + plane]; }
+  float* out(std::size_t instruction, int plane) { return out_planes_[first_plane_[instruction] + plane]; }
   // Plane `plane` of the first argument, laid out as out() lays out results.
   const float* first_in(std::size_t instruction, int plane) const {
-    return in_planes_[instruction * max_op_args * planes_per_value + plane];
+    return in_planes_[first_plane_[instruction] * max_op_args + plane];
   }
 
   static void fill(float value, float* to, const Lanes& lanes) {
@@ -142,8 +146,8 @@ class InterpretedBinding final : public BoundKernel {
       if (instr.uniform != uniform_pass && !marker) continue;
       switch (instr.kind) {
         case IrOpKind::op:
-          kernel_.kernels_[i](interp::InstructionPlanes{&in_planes_[i * max_op_args * planes_per_value],
-                                                        &out_planes_[i * planes_per_value], &kernel_.constants_[i]},
+          kernel_.kernels_[i](interp::InstructionPlanes{&in_planes_[first_plane_[i] * max_op_args],
+                                                        &out_planes_[first_plane_[i]], &kernel_.constants_[i]},
                               lanes);
           break;
         case IrOpKind::constant:
@@ -231,9 +235,9 @@ class InterpretedBinding final : public BoundKernel {
   std::vector<std::uint16_t> lane_lists_;
   std::vector<Lanes> region_stack_;
   std::vector<float> zeros_;  // the partials of values that do not depend on P
-  // Per instruction: max_op_args x planes_per_value, and planes_per_value
-  // (3 components, 4 planes each for a dual; plain ones use the first 3).
-  static constexpr int planes_per_value = 3 * dual_floats;
+  // Instruction i's result planes start at out_planes_[first_plane_[i]],
+  // its argument planes at in_planes_[first_plane_[i] * max_op_args].
+  std::vector<std::size_t> first_plane_;
   std::vector<const float*> in_planes_;
   std::vector<float*> out_planes_;
   UniformInputs uniforms_;

@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "schedule/thread_bindings.h"
-
 namespace shadetree {
 namespace {
 

@@ -396,9 +396,11 @@ class Marcher {
     ray.segment = -1;
   }
 
-  void run(Batch& batch, std::size_t count, TileScratch& scratch) const {
+  // The graph's kernel (or `bound`, another of the graph's) on the first
+  // `count` samples of `batch`.
+  void run(Batch& batch, std::size_t count, TileScratch& scratch, BoundKernel* bound = nullptr) const {
     StageClock clock(scratch.kernel_ns);
-    scratch.bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
+    (bound ? *bound : scratch.bound).run(batch.inputs.inputs(), batch.outputs.planes(), count);
     scratch.counts.density_samples += static_cast<long>(count);
     scratch.counts.kernel_calls += 1;
     scratch.counts.lane_slots += static_cast<long>(lane_slots_of(count, options_.lane_width));
@@ -510,15 +512,9 @@ class Marcher {
       store3(batch.inputs, GlobalId::I, k, ray.frame.along);
     }
     const auto start = std::chrono::steady_clock::now();
-    {
-      StageClock clock(scratch.kernel_ns);
-      scratch.normal_bound->run(batch.inputs.inputs(), batch.outputs.planes(), soft.size());
-    }
+    run(batch, soft.size(), scratch, scratch.normal_bound);
     scratch.counts.gradient_ns += nanoseconds_since(start);
-    scratch.counts.density_samples += static_cast<long>(soft.size());
     scratch.counts.gradient_samples += static_cast<long>(soft.size());
-    scratch.counts.kernel_calls += 1;
-    scratch.counts.lane_slots += static_cast<long>(lane_slots_of(soft.size(), options_.lane_width));
     take_normals(batch, options_.normal_kernel->outputs(), soft, [](std::size_t k) { return k; }, normals);
   }
 
