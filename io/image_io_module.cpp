@@ -1,6 +1,6 @@
-// The OpenImageIO side of image output, built as a loadable module
-// (libshadetree_image_io.so) so that only commands that read or write
-// images pay for loading OpenImageIO: Debian's build of it pulls in some
+// Image inputs through OpenImageIO, built as a loadable module
+// (libshadetree_image_io.so) so that only commands that read images pay
+// for loading OpenImageIO: Debian's build of it pulls in some
 // 250 shared libraries (GDAL, OpenVDB, Xerces...), a quarter of a second of
 // dynamic linking at every start. io/image_output.cpp loads it.
 #include <fcntl.h>
@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <mutex>
 #include <string>
 
@@ -57,52 +56,7 @@ class StderrMuted {
   int saved_ = -1;
 };
 
-// OpenEXR files carry the time they were written (OpenImageIO's DateTime,
-// EXR's capDate), so identical renders differ in bytes. With
-// SOURCE_DATE_EPOCH set (the reproducible-builds convention: seconds since
-// 1970), that time is written instead; "" when it is unset or malformed.
-std::string reproducible_date() {
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-  if (!epoch || !*epoch) return {};
-  char* end = nullptr;
-  const long long seconds = std::strtoll(epoch, &end, 10);
-  if (*end != '\0' || seconds < 0) return {};
-  const std::time_t time = static_cast<std::time_t>(seconds);
-  std::tm utc{};
-  if (!gmtime_r(&time, &utc)) return {};
-  char text[32];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc);
-  return text;
-}
-
 }  // namespace
-
-// Writes the pixels to `file` in the format `format_path`'s extension names;
-// `bits` per channel: 8 or 16 (unsigned, clamped to [0,1]) or 32 (float).
-// 0 on success.
-extern "C" int shadetree_image_io_write(const char* format_path, const char* file, const float* pixels, int width,
-                                        int height, int channels, int bits, char* error, std::size_t error_size) {
-  auto output = OIIO::ImageOutput::create(format_path);
-  if (!output) {
-    set_error(error, error_size, OIIO::geterror());
-    return 1;
-  }
-  const OIIO::TypeDesc type = bits == 8 ? OIIO::TypeDesc::UINT8 : bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::FLOAT;
-  OIIO::ImageSpec spec(width, height, channels, type);
-  spec.attribute("Software", "shadetree");
-  if (const std::string date = reproducible_date(); !date.empty()) spec.attribute("DateTime", date);
-  if (!output->open(file, spec)) {
-    set_error(error, error_size, "cannot write: " + output->geterror());
-    return 1;
-  }
-  const bool written = output->write_image(OIIO::TypeDesc::FLOAT, pixels);
-  const bool closed = output->close();
-  if (!written || !closed) {
-    set_error(error, error_size, "write failed: " + output->geterror());
-    return 1;
-  }
-  return 0;
-}
 
 // Reads any image OpenImageIO knows as float pixels (malloc'ed; release
 // with shadetree_image_io_free), its first four channels at most. Null on

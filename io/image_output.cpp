@@ -3,8 +3,10 @@
 #include <filesystem>
 
 #include "graph/file_path.h"
+#include "io/exr_file.h"
 #include "io/loadable_module.h"
 #include "io/output_file.h"
+#include "io/png_file.h"
 
 namespace shadetree {
 
@@ -16,12 +18,11 @@ std::string lowercase_extension(const std::string& path) {
   return extension;
 }
 
-// The OpenImageIO module (io/image_io_module.cpp), loaded on first use.
+// The OpenImageIO module (io/image_io_module.cpp), loaded on the first
+// read: image inputs come in every format, outputs only as PNG and EXR,
+// which are written without it.
 struct ImageIoModule {
   LoadableModule module{"libshadetree_image_io.so", "image support"};
-  int (*write)(const char*, const char*, const float*, int, int, int, int, char*, std::size_t) =
-      module.function<int(const char*, const char*, const float*, int, int, int, int, char*, std::size_t)>(
-          "shadetree_image_io_write");
   float* (*read)(const char*, long long, int*, int*, int*, char*, std::size_t) =
       module.function<float*(const char*, long long, int*, int*, int*, char*, std::size_t)>("shadetree_image_io_read");
   void (*release)(float*) = module.function<void(float*)>("shadetree_image_io_free");
@@ -45,15 +46,9 @@ Status check_image_path(const std::string& path) {
 Status write_image(const Image& image, const std::string& path, int png_bits) {
   Status writable = check_image_path(path);
   if (!writable) return writable;
-  const std::string extension = lowercase_extension(path);
-  const ImageIoModule& module = image_io_module();
-  if (!module.error.empty()) return failure(module.error);
+  const bool png = lowercase_extension(path) == ".png";
   return write_then_rename(path, [&](const std::string& temporary) {
-    char reason[512] = "";
-    return module.write(path.c_str(), temporary.c_str(), image.pixels.data(), image.width, image.height,
-                        image.channels, extension == ".png" ? png_bits : 32, reason, sizeof reason) != 0
-               ? std::string(reason)
-               : std::string();
+    return png ? write_png(image, temporary, png_bits) : write_exr(image, temporary);
   });
 }
 
