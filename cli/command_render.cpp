@@ -1,6 +1,7 @@
 // shadetree render FILE -o OUT.png|OUT.exr: render a graph of any kind
 // through its driver (render/graph_kinds.h); one frame, or a numbered
-// sequence with --frames, from one compiled kernel.
+// sequence with --frames, from one compiled kernel. Started by mpirun, the
+// ranks share the frames, or each frame's tiles (docs/farm.md).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -16,7 +17,9 @@
 #include "pipeline/compile_graph.h"
 #include "pipeline/tiered_kernel.h"
 #include "render/graph_kinds.h"
+#include "schedule/mpi_job.h"
 #include "schedule/progress.h"
+#include "schedule/tile_packing.h"
 
 namespace shadetree {
 
@@ -88,96 +91,226 @@ std::string frame_path(const std::string& pattern, int frame) {
   return pattern.substr(0, hashes) + number + (end == std::string::npos ? "" : pattern.substr(end));
 }
 
-ExitStatus render(const RenderArguments& arguments) {
-  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
-  if (!loaded) return report(loaded.error());
+// Everything a render needs before its first frame, the same on every
+// rank of an MPI job.
+struct PreparedRender {
+  std::unique_ptr<LoadedGraph> loaded;
   std::vector<std::pair<float, std::string>> frames;  // frame number, output path
+  std::unique_ptr<TieredKernel> tiered;
+  std::unique_ptr<Kernel> kernel;  // when not tiered
+  std::unique_ptr<Kernel> normal_kernel;
+  std::unique_ptr<FrameRenderer> renderer;
+  const GraphKindDriver* driver = nullptr;
+  double setup_milliseconds = 0;
+
+  const Kernel& chosen() const { return tiered ? *tiered : *kernel; }
+};
+
+Result<std::unique_ptr<Kernel>> backend_kernel(const std::string& backend, const ShadeIR& ir, int width) {
+  if (backend == "tiered") return std::unique_ptr<Kernel>(make_tiered_kernel(ir, width));
+  return make_kernel(backend, ir, width);
+}
+
+Result<PreparedRender> prepare(const RenderArguments& arguments) {
+  PreparedRender prepared;
+  Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, {}, graph_files(arguments.search_paths));
+  if (!loaded) return loaded.error();
+  prepared.loaded = std::make_unique<LoadedGraph>(std::move(*loaded));
+  const LoadedGraph& graph = *prepared.loaded;
   if (arguments.frames.empty()) {
-    frames.emplace_back(arguments.frame.value_or(loaded->graph->render.frame), arguments.output);
+    prepared.frames.emplace_back(arguments.frame.value_or(graph.graph->render.frame), arguments.output);
   } else {
     Result<std::vector<int>> listed = parse_frame_list(arguments.frames);
-    if (!listed) return report(listed.error());
+    if (!listed) return listed.error();
     if (!arguments.chunk.empty()) listed = frame_chunk(*listed, arguments.chunk);
-    if (!listed) return report(listed.error());
-    for (int frame : *listed) frames.emplace_back(static_cast<float>(frame), frame_path(arguments.output, frame));
+    if (!listed) return listed.error();
+    for (int frame : *listed) prepared.frames.emplace_back(static_cast<float>(frame), frame_path(arguments.output, frame));
   }
+  // Refuse an output we cannot write before spending time on the render.
+  Status writable = check_image_path(prepared.frames.front().second);
+  if (!writable) return writable.error();
+
+  const auto start = std::chrono::steady_clock::now();
+  if (arguments.backend == "tiered") {
+    prepared.tiered = make_tiered_kernel(graph.ir, arguments.width);
+  } else {
+    Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, graph.ir, arguments.width);
+    if (!kernel) return kernel.error();
+    prepared.kernel = std::move(*kernel);
+  }
+  Result<RenderRequest> request = render_request(arguments);
+  if (!request) return request.error();
+  // --normals exact: a second kernel, the graph with its density's normal.
+  if (request->exact_normals && graph.graph->kind == GraphKind::volume) {
+    Result<LoadedGraph> with_normal = compile_graph(with_normal_from_density(*graph.graph), arguments.assignments,
+                                                    graph_files(arguments.search_paths));
+    if (!with_normal) return with_normal.error();
+    Result<std::unique_ptr<Kernel>> made = backend_kernel(arguments.backend, with_normal->ir, arguments.width);
+    if (!made) return made.error();
+    prepared.normal_kernel = std::move(*made);
+    request->normal_kernel = prepared.normal_kernel.get();
+  }
+  Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*graph.graph, *request);
+  if (!renderer) return renderer.error();
+  prepared.renderer = std::move(*renderer);
+  prepared.driver = &graph_kind_driver(graph.graph->kind);
+  prepared.setup_milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return prepared;
+}
+
+bool output_exists(const std::string& path) {
+  std::error_code ignored;
+  return std::filesystem::exists(path, ignored);
+}
+
+// The render line's closing part: which backend ran the frame.
+std::string backend_text(const RenderArguments& arguments, const PreparedRender& prepared) {
+  if (!prepared.tiered) return arguments.backend + ", kernel ready in " + milliseconds_text(prepared.setup_milliseconds);
+  const TieredReport tiers = prepared.tiered->report();
+  const long runs = tiers.interpreted_runs + tiers.compiled_runs;
+  return tiers.jit_failed ? "tiered: the JIT failed, interpreter throughout"
+         : !tiers.jit_ready || tiers.compiled_runs == 0
+             ? "tiered: interpreter throughout, the JIT still compiling"
+             : "tiered: JIT ready after " + milliseconds_text(tiers.jit_ready_milliseconds) + ", " +
+                   std::to_string(tiers.compiled_runs) + " of " + std::to_string(runs) + " kernel runs on it";
+}
+
+// Renders frame `index` (all of it, or with `claims` the tiles they hand
+// this process).
+Result<Image> render_frame(const RenderArguments& arguments, const PreparedRender& prepared, std::size_t index,
+                           FrameReport& report, TileClaims* claims = nullptr) {
+  ProgressReporter progress(std::string(prepared.driver->progress_verb) + " " + arguments.file, "tiles",
+                            std::string(prepared.driver->progress_unit));
+  return prepared.renderer->render(prepared.chosen(), prepared.loaded->params, prepared.frames[index].first,
+                                   progress.callback(), &report, claims);
+}
+
+void print_render_line(const RenderArguments& arguments, const PreparedRender& prepared, std::size_t index,
+                       const FrameReport& report, const std::string& where) {
+  const std::size_t count = prepared.frames.size();
+  const std::string counter =
+      count > 1 ? "frame " + std::to_string(index + 1) + " of " + std::to_string(count) + ": " : "";
+  std::fprintf(stderr, "%s: %s%s, %s%s) -> %s\n", arguments.file.c_str(), counter.c_str(), report.summary().c_str(),
+               backend_text(arguments, prepared).c_str(), where.c_str(), prepared.frames[index].second.c_str());
+}
+
+ExitStatus render_and_write(const RenderArguments& arguments, const PreparedRender& prepared, std::size_t index,
+                            const std::string& where = "") {
+  FrameReport report;
+  Result<Image> image = render_frame(arguments, prepared, index, report);
+  if (!image) return shadetree::report(image.error());
+  Status written = write_image(*image, prepared.frames[index].second);
+  if (!written) return shadetree::report(written.error());
+  print_render_line(arguments, prepared, index, report, where);
+  return ExitStatus::ok;
+}
+
+void note_replaced_scene(const RenderArguments& arguments, const PreparedRender& prepared) {
+  if (!arguments.object.empty() && prepared.loaded->graph->render.scene)
+    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", printable(arguments.file).c_str(),
+                 printable(arguments.object).c_str());
+}
+
+ExitStatus render_here(const RenderArguments& arguments) {
+  Result<PreparedRender> prepared = prepare(arguments);
+  if (!prepared) return report(prepared.error());
   // A resumed sequence: the frames already written stay as they are.
   if (arguments.skip_existing) {
-    std::error_code ignored;
-    const std::size_t listed = frames.size();
-    std::erase_if(frames, [&](const auto& frame) { return std::filesystem::exists(frame.second, ignored); });
-    if (frames.empty()) {
+    const std::size_t listed = prepared->frames.size();
+    std::erase_if(prepared->frames, [](const auto& frame) { return output_exists(frame.second); });
+    if (prepared->frames.empty()) {
       const std::string done = listed == 1 ? std::string("the output exists already")
                                            : "all " + std::to_string(listed) + " frames exist already";
       std::fprintf(stderr, "%s: %s\n", printable(arguments.file).c_str(), done.c_str());
       return ExitStatus::ok;
     }
   }
-  // Refuse an output we cannot write before spending time on the render.
-  Status writable = check_image_path(frames.front().second);
-  if (!writable) return report(writable.error());
+  note_replaced_scene(arguments, *prepared);
+  for (std::size_t index = 0; index < prepared->frames.size(); ++index)
+    if (ExitStatus status = render_and_write(arguments, *prepared, index); status != ExitStatus::ok) return status;
+  return ExitStatus::ok;
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<TieredKernel> tiered;
-  Result<std::unique_ptr<Kernel>> kernel = std::unique_ptr<Kernel>();
-  if (arguments.backend == "tiered") {
-    tiered = make_tiered_kernel(loaded->ir, arguments.width);
-  } else {
-    kernel = make_kernel(arguments.backend, loaded->ir, arguments.width);
-    if (!kernel) return report(kernel.error());
+// A sequence of at least as many frames as ranks: each rank renders whole
+// frames, claiming the next when done, and writes them.
+ExitStatus render_frames_on_ranks(const RenderArguments& arguments, const PreparedRender& prepared, MpiJob& job) {
+  ExitStatus status = ExitStatus::ok;
+  MpiJob::Queue queue(job);
+  const std::string where = ", rank " + std::to_string(job.rank()) + " of " + std::to_string(job.ranks());
+  for (long index; (index = queue.claim(static_cast<long>(prepared.frames.size()))) >= 0;) {
+    if (arguments.skip_existing && output_exists(prepared.frames[index].second)) continue;
+    status = render_and_write(arguments, prepared, static_cast<std::size_t>(index), where);
+    if (status != ExitStatus::ok) {
+      queue.fail();
+      break;
+    }
   }
-  const Kernel& chosen = tiered ? *tiered : **kernel;
-  Result<RenderRequest> request = render_request(arguments);
-  if (!request) return report(request.error());
-  // --normals exact: a second kernel, the graph with its density's normal.
-  std::unique_ptr<Kernel> normal_kernel;
-  if (request->exact_normals && loaded->graph->kind == GraphKind::volume) {
-    Result<LoadedGraph> with_normal = compile_graph(with_normal_from_density(*loaded->graph), arguments.assignments,
-                                                    graph_files(arguments.search_paths));
-    if (!with_normal) return report(with_normal.error());
-    if (arguments.backend == "tiered") {
-      normal_kernel = make_tiered_kernel(with_normal->ir, arguments.width);
+  queue.close();
+  return static_cast<ExitStatus>(job.agree(static_cast<int>(status)).first);
+}
+
+// Fewer frames than ranks: each frame's tiles are shared by the ranks, each
+// claiming its next tile when done, and gathered to rank 0, which writes
+// the frame.
+ExitStatus render_tiles_on_ranks(const RenderArguments& arguments, const PreparedRender& prepared, MpiJob& job) {
+  for (std::size_t index = 0; index < prepared.frames.size(); ++index) {
+    const std::string& path = prepared.frames[index].second;
+    if (arguments.skip_existing && job.agree(output_exists(path) ? 1 : 0).second) continue;
+    FrameReport report;
+    ExitStatus status = ExitStatus::ok;
+    MpiJob::Queue queue(job);
+    Result<Image> image = render_frame(arguments, prepared, index, report, &queue);
+    if (!image) {
+      status = shadetree::report(image.error());
+      queue.fail();
+    }
+    if (!queue.close()) return static_cast<ExitStatus>(job.agree(static_cast<int>(status)).first);
+    const std::vector<Tile> tiles = queue.rendered_tiles();
+    if (job.rank() != 0) {
+      job.send_to_zero(pack_tiles(*image, tiles));
     } else {
-      Result<std::unique_ptr<Kernel>> made = make_kernel(arguments.backend, with_normal->ir, arguments.width);
-      if (!made) return report(made.error());
-      normal_kernel = std::move(*made);
+      std::string counts = std::to_string(tiles.size());
+      for (int rank = 1; rank < job.ranks() && status == ExitStatus::ok; ++rank) {
+        Result<long> received = unpack_tiles(job.receive_from(rank), *image);
+        if (!received) status = shadetree::report(received.error());
+        else counts += " + " + std::to_string(*received);
+      }
+      if (status == ExitStatus::ok) {
+        Status written = write_image(*image, path);
+        if (!written) status = shadetree::report(written.error());
+      }
+      if (status == ExitStatus::ok)
+        print_render_line(arguments, prepared, index, report,
+                          ", " + std::to_string(job.ranks()) + (job.ranks() == 1 ? " rank" : " ranks") + ", tiles " + counts + ", figures of rank 0");
     }
-    request->normal_kernel = normal_kernel.get();
-  }
-  Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded->graph, *request);
-  if (!renderer) return report(renderer.error());
-  if (!arguments.object.empty() && loaded->graph->render.scene)
-    std::fprintf(stderr, "%s: --object %s replaces the graph's scene\n", printable(arguments.file).c_str(),
-                 printable(arguments.object).c_str());
-  const GraphKindDriver& driver = graph_kind_driver(loaded->graph->kind);
-  const double setup_milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
-  for (std::size_t index = 0; index < frames.size(); ++index) {
-    const auto& [frame, path] = frames[index];
-    ProgressReporter progress(std::string(driver.progress_verb) + " " + arguments.file, "tiles",
-                              std::string(driver.progress_unit));
-    FrameReport frame_report;
-    Result<Image> image = (*renderer)->render(chosen, loaded->params, frame, progress.callback(), &frame_report);
-    if (!image) return report(image.error());
-    Status written = write_image(*image, path);
-    if (!written) return report(written.error());
-    std::string backend = arguments.backend + ", kernel ready in " + milliseconds_text(setup_milliseconds);
-    if (tiered) {
-      const TieredReport tiers = tiered->report();
-      const long runs = tiers.interpreted_runs + tiers.compiled_runs;
-      backend = tiers.jit_failed ? "tiered: the JIT failed, interpreter throughout"
-                : !tiers.jit_ready || tiers.compiled_runs == 0
-                    ? "tiered: interpreter throughout, the JIT still compiling"
-                    : "tiered: JIT ready after " + milliseconds_text(tiers.jit_ready_milliseconds) + ", " +
-                          std::to_string(tiers.compiled_runs) + " of " + std::to_string(runs) + " kernel runs on it";
-    }
-    const std::string counter =
-        frames.size() > 1 ? "frame " + std::to_string(index + 1) + " of " + std::to_string(frames.size()) + ": " : "";
-    std::fprintf(stderr, "%s: %s%s, %s) -> %s\n", arguments.file.c_str(), counter.c_str(), frame_report.summary().c_str(),
-                 backend.c_str(), path.c_str());
+    status = static_cast<ExitStatus>(job.agree(static_cast<int>(status)).first);
+    if (status != ExitStatus::ok) return status;
   }
   return ExitStatus::ok;
+}
+
+// Under mpirun: every rank sets up the render; a failure there is
+// reported once (by rank 0, or by a rank that failed where rank 0 did not).
+ExitStatus render_on_ranks(const RenderArguments& arguments, MpiJob& job) {
+  Result<PreparedRender> prepared = prepare(arguments);
+  const ExitStatus mine = prepared ? ExitStatus::ok : prepared.error().status;
+  const auto [worst, rank_zero] = job.agree(static_cast<int>(mine));
+  if (worst != 0) {
+    if (!prepared && (job.rank() == 0 || rank_zero == 0)) report(prepared.error());
+    return static_cast<ExitStatus>(worst);
+  }
+  if (job.rank() == 0) note_replaced_scene(arguments, *prepared);
+  return prepared->frames.size() >= static_cast<std::size_t>(job.ranks()) && prepared->frames.size() > 1
+             ? render_frames_on_ranks(arguments, *prepared, job)
+             : render_tiles_on_ranks(arguments, *prepared, job);
+}
+
+ExitStatus render(const RenderArguments& arguments) {
+  if (!MpiJob::launched()) return render_here(arguments);
+  Result<std::unique_ptr<MpiJob>> job = MpiJob::join();
+  if (!job) return report(job.error());
+  return render_on_ranks(arguments, **job);
 }
 }  // namespace
 

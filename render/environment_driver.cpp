@@ -60,7 +60,7 @@ Result<Image> render_directions(const Kernel& kernel, const std::vector<float>& 
     return static_cast<long>(count);
   };
   if (Status done = for_each_tile(width, height, tile_size, options.threads, render_tile, options.progress,
-                                  options.cancel);
+                                  options.cancel, options.claims);
       !done)
     return done.error();
   return image;
@@ -74,9 +74,11 @@ class EnvironmentFrames : public FrameRenderer {
   }
 
   Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
-                             const ProgressCallback& progress, FrameReport& report) const override {
+                             const ProgressCallback& progress, TileClaims* claims,
+                             FrameReport& report) const override {
     EnvironmentRenderOptions options = options_;
     options.progress = progress;
+    options.claims = claims;
     report.kernel_samples = static_cast<long>(width_) * height_;
     report.what = std::to_string(width_) + "x" + std::to_string(height_) + " panorama, " +
                   std::to_string(report.kernel_samples) + " directions";

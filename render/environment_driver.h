@@ -20,6 +20,7 @@
 #include "nodes/image.h"
 #include "render/graph_kinds.h"
 #include "scene/camera.h"
+#include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 
 namespace shadetree {
@@ -45,6 +46,7 @@ struct EnvironmentRenderOptions {
   int threads = 0;  // 0: all cores
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
+  TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
 };
 
 // The graph's colour over the whole sphere of directions, as a panorama.

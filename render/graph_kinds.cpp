@@ -63,10 +63,10 @@ std::string FrameReport::summary() const {
 }
 
 Result<Image> FrameRenderer::render(const Kernel& kernel, const std::vector<float>& params, float frame,
-                                    const ProgressCallback& progress, FrameReport* report) const {
+                                    const ProgressCallback& progress, FrameReport* report, TileClaims* claims) const {
   FrameReport counts;
   const auto start = std::chrono::steady_clock::now();
-  Result<Image> image = render_frame(kernel, params, frame, progress, counts);
+  Result<Image> image = render_frame(kernel, params, frame, progress, claims, counts);
   counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (report) *report = std::move(counts);
   return image;

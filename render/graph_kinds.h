@@ -19,6 +19,7 @@
 #include "graph/json_reader.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
+#include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 
 namespace shadetree {
@@ -82,14 +83,16 @@ struct FrameReport {
 class FrameRenderer {
  public:
   virtual ~FrameRenderer() = default;
-  // The frame, and in `report` (if not null) what it took.
+  // The frame, and in `report` (if not null) what it took. With `claims`,
+  // only the pixels of the tiles it hands out (for_each_tile).
   Result<Image> render(const Kernel& kernel, const std::vector<float>& params, float frame,
-                       const ProgressCallback& progress, FrameReport* report) const;
+                       const ProgressCallback& progress, FrameReport* report, TileClaims* claims = nullptr) const;
 
  private:
   // The driver's part: the frame, and its counts in `report` but the time.
   virtual Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
-                                     const ProgressCallback& progress, FrameReport& report) const = 0;
+                                     const ProgressCallback& progress, TileClaims* claims,
+                                     FrameReport& report) const = 0;
 };
 
 // What `shadetree eval` shows of the sample a driver makes at a point.

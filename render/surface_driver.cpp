@@ -86,11 +86,13 @@ class SurfaceFrames : public FrameRenderer {
   }
 
   Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
-                             const ProgressCallback& progress, FrameReport& report) const override {
+                             const ProgressCallback& progress, TileClaims* claims,
+                             FrameReport& report) const override {
     SurfaceView view = view_;
     view.frame = frame;
     SurfaceRenderOptions options = options_;
     options.progress = progress;
+    options.claims = claims;
     Result<std::optional<Image>> background = environment_seen_by(
         environment_.get(), camera_, view.width, view.height, frame, {options.threads, {}, options.cancel});
     if (!background) return background.error();
@@ -266,7 +268,7 @@ Result<Image> render_surface(const Kernel& kernel, const std::vector<float>& par
     return static_cast<long>(w) * h * samples_per_pixel;
   };
   if (Status done = for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress,
-                                  options.cancel);
+                                  options.cancel, options.claims);
       !done)
     return done.error();
   if (stats) {

@@ -12,6 +12,7 @@
 #include "ir/kernel.h"
 #include "render/graph_kinds.h"
 #include "scene/camera.h"
+#include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 #include "nodes/image.h"
 #include "scene/scene.h"
@@ -31,6 +32,7 @@ struct SurfaceRenderOptions {
   const Image* background = nullptr;  // RGB per pixel (an environment the camera sees); else the scene's colour
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
+  TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
 };
 
 // Where the time went, summed over threads (seconds of one core).

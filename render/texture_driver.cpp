@@ -26,11 +26,13 @@ class TextureFrames : public FrameRenderer {
   }
 
   Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
-                             const ProgressCallback& progress, FrameReport& report) const override {
+                             const ProgressCallback& progress, TileClaims* claims,
+                             FrameReport& report) const override {
     TextureView view = view_;
     view.frame = frame;
     TextureRenderOptions options = options_;
     options.progress = progress;
+    options.claims = claims;
     report.kernel_samples = static_cast<long>(view.width) * view.height;
     report.what = std::to_string(view.width) + "x" + std::to_string(view.height) + ", " +
                   std::to_string(report.kernel_samples) + " samples";
@@ -131,7 +133,7 @@ Result<std::vector<Image>> render_texture_outputs(const Kernel& kernel, const st
     return static_cast<long>(count);
   };
   if (Status done = for_each_tile(view.width, view.height, tile_size, options.threads, render_tile, options.progress,
-                                  options.cancel);
+                                  options.cancel, options.claims);
       !done)
     return done.error();
   return result;

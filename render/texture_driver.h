@@ -10,6 +10,7 @@
 #include "ir/kernel.h"
 #include "nodes/image.h"
 #include "render/graph_kinds.h"
+#include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 
 namespace shadetree {
@@ -48,6 +49,7 @@ struct TextureRenderOptions {
   int threads = 0;  // 0: all cores
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
+  TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
 };
 
 // Images of a texture graph's output planes (OutputLayout::plane): image k

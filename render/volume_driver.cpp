@@ -746,11 +746,13 @@ class VolumeFrames : public FrameRenderer {
         camera_(scene_.desc().camera, view.width, view.height), volume_(volume), view_(view), options_(options) {}
 
   Result<Image> render_frame(const Kernel& kernel, const std::vector<float>& params, float frame,
-                             const ProgressCallback& progress, FrameReport& report) const override {
+                             const ProgressCallback& progress, TileClaims* claims,
+                             FrameReport& report) const override {
     VolumeView view = view_;
     view.frame = frame;
     VolumeRenderOptions options = options_;
     options.progress = progress;
+    options.claims = claims;
     Result<std::optional<Image>> background = environment_seen_by(
         environment_.get(), camera_, view.width, view.height, frame, {options.threads, {}, options.cancel});
     if (!background) return background.error();
@@ -909,7 +911,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         lane_slots += counts.lane_slots;
         return counts.rays;
       },
-      options.progress, options.cancel);
+      options.progress, options.cancel, options.claims);
   if (!done) return done.error();
 
   if (stats) {

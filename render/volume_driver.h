@@ -21,6 +21,7 @@
 #include "render/graph_kinds.h"
 #include "nodes/image.h"
 #include "scene/camera.h"
+#include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 #include "scene/scene.h"
 
@@ -54,6 +55,7 @@ struct VolumeRenderOptions {
   const Kernel* normal_kernel = nullptr;
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
+  TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
 };
 
 // Where the time went (seconds of one core, summed over threads) and how
