@@ -6,11 +6,14 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <ctime>
 #include <exception>
 #include <string>
+#include <thread>
 
 namespace shadetree {
 
@@ -61,7 +64,13 @@ std::string write_exr(const Image& image, const std::string& file) {
       char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
       frame.insert(name, Imf::Slice(Imf::FLOAT, base, pixel, pixel * image.width));
     }
-    Imf::OutputFile output(file.c_str(), header);
+    // Blocks of scanlines are compressed on every core (OpenEXR's pool, made
+    // once): alone, ZIP took 5 of the 7 s of a 4096x4096 render.
+    static const int threads = [] {
+      Imf::setGlobalThreadCount(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+      return Imf::globalThreadCount();
+    }();
+    Imf::OutputFile output(file.c_str(), header, threads);
     output.setFrameBuffer(frame);
     output.writePixels(image.height);
   } catch (const std::exception& error) {
