@@ -7,6 +7,7 @@
 // slider drag re-renders without recompiling.
 import { api, errorOf, imageOf } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
+import { documentText } from "./document_text.js";
 import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
@@ -46,6 +47,7 @@ const state = {
   drawnKey: null,       // what the preview shows: size, frame and the document sent
   drawnSide: null,      // and its side
   savedText: null,      // the document as last opened or saved
+  fileText: null,       // the file's text as last opened or saved, which a save patches
   lastExport: null,     // {url, name, type, size} of the last exported image
 };
 
@@ -522,6 +524,7 @@ async function open(path) {
   previewCanvas.getContext("2d").clearRect(0, 0, previewCanvas.width, previewCanvas.height);
   state.path = path;
   state.doc = doc;
+  state.fileText = text;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
@@ -552,7 +555,8 @@ async function save() {
   return write(state.path, false);
 }
 
-// PUT the document to `path`, which then is the file open;
+// PUT the document, written in the style of the file it was opened from
+// (editor/document_text.js), to `path`, which then is the file open;
 // isNew: the server refuses (409) to overwrite a file. Nothing of it is
 // remembered if another file was opened meanwhile.
 async function write(path, isNew) {
@@ -560,7 +564,7 @@ async function write(path, isNew) {
   history.flush();
   const opened = state.opened;
   const doc = graphView.document();
-  const text = JSON.stringify(doc, null, 2) + "\n";
+  const text = documentText(state.fileText, doc);
   const response = await api("PUT", `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`, text);
   const error = response.ok ? null : await errorOf(response);
   if (opened !== state.opened) return false;
@@ -569,6 +573,7 @@ async function write(path, isNew) {
     return false;
   }
   state.path = path;
+  state.fileText = text;
   state.savedText = JSON.stringify(doc);
   setStatus(`saved ${path}`, false);
   showHistoryState();

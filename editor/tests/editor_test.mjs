@@ -16,10 +16,13 @@
 // a pause; a graph opened during a preview never shows the earlier
 // graph's picture; a malformed file and one that is JSON but no graph are
 // refused on open and Ctrl+S cannot write over them; leaving the page with
-// unsaved edits asks first.
+// unsaved edits asks first; every gallery file opened and saved unedited
+// is written back byte for byte, and a changed param default changes one
+// line of its file. First, the unit tests of the page's modules that need
+// no browser (editor/tests/*_test.mjs but this one).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
-import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import assert from "node:assert/strict";
@@ -27,9 +30,19 @@ import puppeteer from "puppeteer-core";
 
 const [binary, source, screenshot] = process.argv.slice(2);
 const testStarted = performance.now();
+const unitTests = readdirSync(join(source, "editor", "tests")).filter((name) => name.endsWith("_test.mjs") && name !== "editor_test.mjs");
+const units = spawnSync(process.execPath, ["--test", "--test-reporter=dot", ...unitTests.map((name) => join(source, "editor", "tests", name))],
+                        { encoding: "utf8" });
+if (units.status !== 0) {
+  console.error(units.stdout, units.stderr);
+  process.exit(1);
+}
+console.log(`unit tests passed: ${unitTests.join(", ")}`);
+
 const folder = mkdtempSync(join(tmpdir(), "shadetree-editor-test-"));
 copyFileSync(join(source, "graphs", "marble.json"), join(folder, "marble.json"));
 // Listed after marble.json, which the page opens first.
+cpSync(join(source, "graphs"), join(folder, "roundtrip"), { recursive: true });
 mkdirSync(join(folder, "wrong"));
 writeFileSync(join(folder, "wrong", "broken.json"), "{\"format\": ");
 const notAGraph = '{"format": "shadetree-graph", "version": 1, "name": "n", "kind": "texture", "nodes": [1], "outputs": {}}\n';
@@ -436,6 +449,35 @@ try {
   const fireball = spawnSync(binary, ["check", join(folder, "fireball.json")], { encoding: "utf8" });
   assert.equal(fireball.status, 0, fireball.stderr);
   console.log("Ctrl+S after the refusals saved fireball.json, which checks; unsaved edits guard the page");
+
+  // Every gallery file, chosen in the list and saved with Ctrl+S unedited,
+  // is written back byte for byte.
+  const roundTripStarted = performance.now();
+  const gallery = readdirSync(join(source, "graphs")).filter((name) => name.endsWith(".json"));
+  for (const name of gallery) {
+    const path = `roundtrip/${name}`;
+    await page.select("#graph-list", path);
+    await page.waitForFunction((path) => window.shadetreeEditor.state.path === path, { timeout: 10000 }, path);
+    assert.equal(await saveWithKeys(path), readFileSync(join(source, "graphs", name), "utf8"), `${path} byte for byte`);
+  }
+  console.log(`${gallery.length} gallery files opened and saved unedited: each byte for byte the same ` +
+              `(${((performance.now() - roundTripStarted) / 1000).toFixed(1)} s)`);
+
+  // One param default typed in its field: one line of the file changes.
+  await page.select("#graph-list", "roundtrip/fireball.json");
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "roundtrip/fireball.json", { timeout: 10000 });
+  await page.click('input[title="strength: exact value"]', { clickCount: 3 });
+  await page.keyboard.type("1.25");
+  await page.keyboard.press("Tab");
+  const edited = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
+  const original = readFileSync(join(source, "graphs", "fireball.json"), "utf8").split("\n");
+  assert.equal(edited.length, original.length);
+  const changed = original.flatMap((line, i) => (line === edited[i] ? [] : [[line, edited[i]]]));
+  assert.deepEqual(changed, [[
+    '    "strength": {"type": "float", "default": 0.9, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+    '    "strength": {"type": "float", "default": 1.25, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+  ]]);
+  console.log("fireball.json's strength set to 1.25 in its field and saved: that one line of the file changed");
 
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
