@@ -11,6 +11,7 @@ import { documentText } from "./document_text.js";
 import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
+import { inputValueRows } from "./input_values.js";
 import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
@@ -56,7 +57,11 @@ const pathQuery = () => (state.path ? `path=${encodeURIComponent(state.path)}&` 
 
 const graphView = new GraphView(byId("graph-canvas"), {
   state,
-  onEdit: () => edited(),
+  // A wire drawn or cut may free or take an input the node panel shows.
+  onEdit: () => {
+    edited();
+    showNodePanel(graphView.viewOf(graphView.selectedId()));
+  },
   onMove: () => history.touch(snapshot),
   thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
 });
@@ -183,6 +188,14 @@ function showNodePanel(v) {
   const editor = attributeEditor(node, (interactive) => edited({ interactive }));
   if (editor) panel.append(editor);
   for (const attribute of entry?.attributes || []) panel.append(...simpleAttributeField(node, attribute));
+  const declared = fn?.inputs || {};
+  const inputs = entry ? entry.inputs
+                       : fn ? sourcesOf(state.doc, node.op).map((input) => ({ ...input, default: declared[input.name]?.default })) : [];
+  panel.append(...inputValueRows(node, inputs, {
+    wired: (input) => graphView.isWired(node.id, input),
+    onConstant: (input, value) => graphView.showConstant(node.id, input, value),
+    onEdit: (interactive) => edited({ interactive }),
+  }));
 }
 
 // Integer and choice attributes (a noise seed, an image's wrap) as fields.

@@ -18,7 +18,8 @@
 // refused on open and Ctrl+S cannot write over them; leaving the page with
 // unsaved edits asks first; every gallery file opened and saved unedited
 // is written back byte for byte, and a changed param default changes one
-// line of its file. First, the unit tests of the page's modules that need
+// line of its file; constants typed into a node's unwired inputs (a float,
+// a vec3) are previewed, undone, redone and saved as one line. First, the unit tests of the page's modules that need
 // no browser (editor/tests/*_test.mjs but this one).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
@@ -478,6 +479,47 @@ try {
     '    "strength": {"type": "float", "default": 1.25, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
   ]]);
   console.log("fireball.json's strength set to 1.25 in its field and saved: that one line of the file changed");
+
+  // Constants on unwired inputs, in the node panel: ball's radius (1.05
+  // in the file) and its center (not in the file: the op's default, 0).
+  await page.evaluate(() => window.shadetreeEditor.canvas.selectNode(window.shadetreeEditor.viewOf("ball")));
+  await page.waitForSelector('input[name="ball.radius"]', { timeout: 5000 });
+  assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05");
+  assert.equal(await page.$('input[name="ball.p"]'), null, "a wired input has no field");
+  assert.equal(await page.$eval('input[name="ball.center.1"]', (field) => `${field.value}|${field.placeholder}`), "|0");
+  const ballInputs = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().nodes.find((n) => n.id === "ball").in);
+  const typeInto = async (name, text) => {
+    await page.click(`input[name="${name}"]`, { clickCount: 3 });
+    await page.keyboard.type(text);
+  };
+  const previewsBeforeRadius = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  await typeInto("ball.radius", "1.2");
+  await page.keyboard.press("Tab");
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeRadius);
+  assert.deepEqual(await ballInputs(), { p: "scaled", radius: 1.2, softness: 0.9 });
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.viewOf("ball").inputs.find((slot) => slot.name === "radius").label),
+               "radius: float = 1.2");
+  for (const [component, text] of ["0", "0.2", "0"].entries()) await typeInto(`ball.center.${component}`, text);
+  await page.keyboard.press("Tab");
+  assert.deepEqual((await ballInputs()).center, [0, 0.2, 0]);
+  await page.evaluate(() => document.activeElement.blur());
+  await settled();
+  await pressKeys("Control", "z");
+  assert.equal((await ballInputs()).center, undefined, "undo takes the center away");
+  await pressKeys("Control", "z");
+  assert.equal((await ballInputs()).radius, 1.05, "and then the radius back");
+  assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05", "the panel follows undo");
+  await pressKeys("Control", "Shift", "z");
+  await pressKeys("Control", "Shift", "z");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null && window.shadetreeEditor.state.previews > 0,
+                             { timeout: 10000 });
+  const withConstants = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
+  const changedByConstants = original.flatMap((line, i) => (line === withConstants[i] ? [] : [withConstants[i]]));
+  assert.deepEqual(changedByConstants, [
+    '    "strength": {"type": "float", "default": 1.25, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+    '    {"id": "ball", "op": "sphere", "in": {"p": "scaled", "radius": 1.2, "softness": 0.9, "center": [0, 0.2, 0]}},',
+  ]);
+  console.log("ball's radius typed as 1.2 and its center as 0, 0.2, 0 in the node panel: previewed, undone, redone, saved as one line");
 
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
