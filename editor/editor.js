@@ -7,9 +7,11 @@
 // slider drag re-renders without recompiling.
 import { api, errorOf, imageOf } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
+import { documentText } from "./document_text.js";
 import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
+import { inputValueRows } from "./input_values.js";
 import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
@@ -46,6 +48,7 @@ const state = {
   drawnKey: null,       // what the preview shows: size, frame and the document sent
   drawnSide: null,      // and its side
   savedText: null,      // the document as last opened or saved
+  fileText: null,       // the file's text as last opened or saved, which a save patches
   lastExport: null,     // {url, name, type, size} of the last exported image
 };
 
@@ -54,7 +57,11 @@ const pathQuery = () => (state.path ? `path=${encodeURIComponent(state.path)}&` 
 
 const graphView = new GraphView(byId("graph-canvas"), {
   state,
-  onEdit: () => edited(),
+  // A wire drawn or cut may free or take an input the node panel shows.
+  onEdit: () => {
+    edited();
+    showNodePanel(graphView.viewOf(graphView.selectedId()));
+  },
   onMove: () => history.touch(snapshot),
   thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
 });
@@ -181,6 +188,14 @@ function showNodePanel(v) {
   const editor = attributeEditor(node, (interactive) => edited({ interactive }));
   if (editor) panel.append(editor);
   for (const attribute of entry?.attributes || []) panel.append(...simpleAttributeField(node, attribute));
+  const declared = fn?.inputs || {};
+  const inputs = entry ? entry.inputs
+                       : fn ? sourcesOf(state.doc, node.op).map((input) => ({ ...input, default: declared[input.name]?.default })) : [];
+  panel.append(...inputValueRows(node, inputs, {
+    wired: (input) => graphView.isWired(node.id, input),
+    onConstant: (input, value) => graphView.showConstant(node.id, input, value),
+    onEdit: (interactive) => edited({ interactive }),
+  }));
 }
 
 // Integer and choice attributes (a noise seed, an image's wrap) as fields.
@@ -287,7 +302,7 @@ async function update() {
       lastCheck.result = result;
     }
   } catch (error) {
-    setStatus(String(error), true);
+    if (sequence === state.sequence) setStatus(String(error), true);
     return;
   }
   const check = lastCheck.result;
@@ -340,7 +355,8 @@ async function requestPreview(body, side, key) {
                                body, controller.signal);
     if (response.status === 409) return false;
     if (!response.ok) {
-      setStatus(await errorOf(response), true);
+      const error = await errorOf(response);
+      if (opened === state.opened) setStatus(error, true);
       return false;
     }
     const image = await imageOf(response);
@@ -361,7 +377,7 @@ async function requestPreview(body, side, key) {
     setStatus(`${state.path || "untitled"}: ok`, false);
     return true;
   } catch (error) {
-    if (error.name !== "AbortError") setStatus(String(error), true);
+    if (error.name !== "AbortError" && opened === state.opened) setStatus(String(error), true);
     return false;
   } finally {
     finished();
@@ -487,29 +503,41 @@ function selectInGraphList(path) {
   list.value = path;
 }
 
-// The document changes only once the file has parsed: a file that is not a
-// graph's JSON leaves the open one open, and Save cannot write over it.
+// The document changes only once the server has read the file as a graph
+// (graph/parse.h: its JSON, fields and their types), so a file the canvas
+// cannot show leaves the open one open, and Save cannot write over it. A
+// graph with a check error (a type, a missing node) opens, with the error
+// on its node. Of two opens under way, the later one wins.
+let opening = 0;
 async function open(path) {
+  const attempt = ++opening;
   const keepOpen = (message) => {
+    if (attempt !== opening) return;
     setStatus(message, true);
     byId("graph-list").value = state.path ?? "";
   };
   const response = await api("GET", `/api/graph?path=${encodeURIComponent(path)}`);
   if (!response.ok) return keepOpen(await errorOf(response));
+  const text = await response.text();
+  const refuse = (why) => keepOpen(`${path} is not a graph file (${why}); ${state.path ?? "nothing"} stays open`);
   let doc;
   try {
-    doc = JSON.parse(await response.text());
+    doc = JSON.parse(text);
   } catch (error) {
-    return keepOpen(`${path} is not a graph file (${error.message}); ${state.path ?? "nothing"} stays open`);
+    return refuse(error.message);
   }
-  if (!doc || typeof doc !== "object" || Array.isArray(doc) || !Array.isArray(doc.nodes))
-    return keepOpen(`${path} is not a graph file (no "nodes" array); ${state.path ?? "nothing"} stays open`);
+  const checked = await api("POST", `/api/check?path=${encodeURIComponent(path)}`, text);
+  if (!checked.ok) return keepOpen(await errorOf(checked));
+  const check = await checked.json();
+  if (!check.ok && !check.parsed) return refuse(check.error.message);
+  if (attempt !== opening) return;
   setPlaying(false);
   state.opened += 1;
   inflight?.controller.abort();
   previewCanvas.getContext("2d").clearRect(0, 0, previewCanvas.width, previewCanvas.height);
   state.path = path;
   state.doc = doc;
+  state.fileText = text;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
@@ -540,19 +568,27 @@ async function save() {
   return write(state.path, false);
 }
 
-// PUT the document; isNew: the server refuses (409) to overwrite a file.
+// PUT the document, written in the style of the file it was opened from
+// (editor/document_text.js), to `path`, which then is the file open;
+// isNew: the server refuses (409) to overwrite a file. Nothing of it is
+// remembered if another file was opened meanwhile.
 async function write(path, isNew) {
   if (!state.doc) return false;
   history.flush();
-  const text = JSON.stringify(graphView.document(), null, 2) + "\n";
+  const opened = state.opened;
+  const doc = graphView.document();
+  const text = documentText(state.fileText, doc);
   const response = await api("PUT", `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`, text);
-  if (!response.ok) {
-    setStatus(await errorOf(response), true);
+  const error = response.ok ? null : await errorOf(response);
+  if (opened !== state.opened) return false;
+  if (error) {
+    setStatus(error, true);
     return false;
   }
-  const result = await response.json();
-  state.savedText = JSON.stringify(JSON.parse(text));
-  setStatus(`saved ${result.saved}`, false);
+  state.path = path;
+  state.fileText = text;
+  state.savedText = JSON.stringify(doc);
+  setStatus(`saved ${path}`, false);
   showHistoryState();
   return true;
 }
@@ -562,7 +598,6 @@ async function saveAs(name) {
   const path = name.trim().endsWith(".json") ? name.trim() : `${name.trim()}.json`;
   if (path === ".json") return false;
   if (!(await write(path, true))) return false;
-  state.path = path;
   selectInGraphList(path);
   scheduleUpdate();
   return true;

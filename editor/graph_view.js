@@ -38,6 +38,10 @@ const newNodeAttributes = {
 };
 
 const literalText = (value) => (Array.isArray(value) ? `[${value.join(", ")}]` : String(value));
+// An input's label, "name: type", with " = value" when a constant feeds it.
+function labelConstant(slot, value) {
+  slot.label = slot.label.replace(/ ⚠$/, "").replace(/ = .*$/, "") + (value === undefined ? "" : ` = ${literalText(value)}`);
+}
 const titleOf = (id, op) => (id === op ? id : `${id} (${op})`);
 const positionKey = (v) => v.shadetreeId ?? `#${v.boundary}`;
 
@@ -294,7 +298,7 @@ export class GraphView {
         const slot = target.findInputSlot(input);
         const source = typeof value === "string" ? sourceOf(value) : null;
         if (typeof value !== "string") {
-          if (slot >= 0) target.inputs[slot].label += ` = ${literalText(value)}`;
+          if (slot >= 0) labelConstant(target.inputs[slot], value);
         } else if (source && slot >= 0) {
           source[0].connect(source[1], target, slot);
         } else {
@@ -369,6 +373,22 @@ export class GraphView {
     const outputs = this.boundaryView("outputs");
     if (outputs) body.outputs = this.valuesFromCanvas(outputs, body.outputs);
     return doc;
+  }
+
+  // Input `input` of node `id` is fed the constant `value` (undefined: none).
+  showConstant(id, input, value) {
+    const v = this.viewOf(id);
+    const slot = v?.findInputSlot(input) ?? -1;
+    if (slot < 0) return;
+    labelConstant(v.inputs[slot], value);
+    this.markError(this.state.lastError);
+  }
+
+  // Whether a wire feeds input `input` of node `id` on the canvas.
+  isWired(id, input) {
+    const v = this.viewOf(id);
+    const slot = v?.findInputSlot(input) ?? -1;
+    return slot >= 0 && v.inputs[slot].link != null;
   }
 
   // The checker's diagnostic on the node and input it names.

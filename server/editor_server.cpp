@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "graph/parse.h"
 #include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
@@ -386,8 +387,15 @@ void EditorServer::add_check_route() {
   server_->Post("/api/check", [this](const httplib::Request& request, httplib::Response& response) {
     Result<std::filesystem::path> path = graph_path(request, false);
     if (!path) return send_error(response, 400, path.error().message);
-    Result<LoadedGraph> loaded = compile_graph_text(request.body, path->string(), {}, {}, files_);
-    if (!loaded) return send_json(response, {{"ok", false}, {"error", diagnostic_json(loaded.error())}});
+    // The editor opens a graph with a check error, to mend it, but not a
+    // file that does not parse as one: the canvas could not show it.
+    const auto refused = [&](bool parsed, const Diagnostic& error) {
+      send_json(response, {{"ok", false}, {"parsed", parsed}, {"error", diagnostic_json(error)}});
+    };
+    Result<Graph> parsed = parse_graph(request.body, path->string());
+    if (!parsed) return refused(false, parsed.error());
+    Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
+    if (!loaded) return refused(true, loaded.error());
     send_json(response, {{"ok", true}});
   });
 }

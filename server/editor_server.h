@@ -25,7 +25,10 @@
 //   PUT  /api/graph?path=P[&new=1]
 //                               saves the body (JSON text) to P, through a temporary file;
 //                               with new=1 (save as), 409 if P exists
-//   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "error": {...}}
+//   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "parsed": B,
+//                               "error": {...}}; parsed is false when the body is not a graph file at
+//                               all (its JSON, fields and their types: graph/parse.h), true when it is
+//                               one with a check error
 //   POST /api/preview?path=P&width=W&height=H&frame=F[&node=ID][&slot=S]
 //                               renders the body as graph P: W x H RGBA bytes, rows from the top;
 //                               headers X-Width, X-Height, X-Kernel (memory | disk | compiled |

@@ -289,11 +289,30 @@ TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
   ASSERT_EQ(bad->status, 200);
   const auto json = nlohmann::json::parse(bad->body);
   EXPECT_EQ(json["ok"], false);
+  EXPECT_EQ(json["parsed"], true) << "a graph file with a check error";
   EXPECT_EQ(json["error"]["node"], "s");
   EXPECT_EQ(json["error"]["input"], "frequency");
   const Result<LoadedGraph> cli = compile_graph_text(wrong, (root_ / "graphs" / "waves.json").string());
   ASSERT_FALSE(cli.ok());
   EXPECT_EQ(json["error"]["text"], cli.error().to_string()) << "the same text as the command line";
+}
+
+// The editor opens only what parses as a graph file (server/editor_server.h).
+TEST_F(EditorServerTest, CheckSaysWhenABodyIsNotAGraphFileAtAll) {
+  const std::string not_graphs[] = {"{\"format\": ", "[1, 2]",
+                                    R"({"format": "shadetree-graph", "version": 1, "name": "n", "kind": "texture",
+                                        "nodes": [1], "outputs": {"color": "a"}})"};
+  for (const std::string& body : not_graphs) {
+    auto refused = client_->Post("/api/check?path=waves.json", headers_, body, "application/json");
+    ASSERT_TRUE(refused);
+    ASSERT_EQ(refused->status, 200) << body;
+    const auto json = nlohmann::json::parse(refused->body);
+    EXPECT_EQ(json["ok"], false) << body;
+    EXPECT_EQ(json["parsed"], false) << body;
+    const std::string text = json["error"]["text"];
+    EXPECT_EQ(text.find('\n'), std::string::npos) << "one line: " << text;
+    EXPECT_NE(text.find("waves.json"), std::string::npos) << text;
+  }
 }
 
 TEST_F(EditorServerTest, PreviewsRenderAndParamChangesDoNotRecompile) {

@@ -14,19 +14,40 @@
 // the server's spline, Catmull-Rom and linear; a volume opens as a draft
 // refined to the full size, and its slider drag draws drafts, refined on
 // a pause; a graph opened during a preview never shows the earlier
-// graph's picture; a malformed file is refused on open and Save cannot
-// write over it; leaving the page with unsaved edits asks first.
+// graph's picture; a malformed file and one that is JSON but no graph are
+// refused on open and Ctrl+S cannot write over them; leaving the page with
+// unsaved edits asks first; every gallery file opened and saved unedited
+// is written back byte for byte, and a changed param default changes one
+// line of its file; constants typed into a node's unwired inputs (a float,
+// a vec3) are previewed, undone, redone and saved as one line. First, the unit tests of the page's modules that need
+// no browser (editor/tests/*_test.mjs but this one).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
-import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import assert from "node:assert/strict";
 import puppeteer from "puppeteer-core";
 
 const [binary, source, screenshot] = process.argv.slice(2);
+const testStarted = performance.now();
+const unitTests = readdirSync(join(source, "editor", "tests")).filter((name) => name.endsWith("_test.mjs") && name !== "editor_test.mjs");
+const units = spawnSync(process.execPath, ["--test", "--test-reporter=dot", ...unitTests.map((name) => join(source, "editor", "tests", name))],
+                        { encoding: "utf8" });
+if (units.status !== 0) {
+  console.error(units.stdout, units.stderr);
+  process.exit(1);
+}
+console.log(`unit tests passed: ${unitTests.join(", ")}`);
+
 const folder = mkdtempSync(join(tmpdir(), "shadetree-editor-test-"));
 copyFileSync(join(source, "graphs", "marble.json"), join(folder, "marble.json"));
+// Listed after marble.json, which the page opens first.
+cpSync(join(source, "graphs"), join(folder, "roundtrip"), { recursive: true });
+mkdirSync(join(folder, "wrong"));
+writeFileSync(join(folder, "wrong", "broken.json"), "{\"format\": ");
+const notAGraph = '{"format": "shadetree-graph", "version": 1, "name": "n", "kind": "texture", "nodes": [1], "outputs": {}}\n';
+writeFileSync(join(folder, "wrong", "not_a_graph.json"), notAGraph);
 
 const server = spawn(binary, ["serve", folder], { stdio: ["ignore", "pipe", "pipe"] });
 server.stderr.on("data", (data) => process.stderr.write(data));
@@ -92,6 +113,18 @@ try {
   const pressKeys = async (...keys) => {
     for (const key of keys) await page.keyboard.down(key);
     for (const key of keys.reverse()) await page.keyboard.up(key);
+  };
+  // Ctrl+S, and the text of the file it saves, which is removed first so
+  // that the one read is the one saved (saves write a temporary file and
+  // rename it).
+  const saveWithKeys = async (path) => {
+    rmSync(join(folder, path));
+    await pressKeys("Control", "s");
+    for (let wait = 0; !existsSync(join(folder, path)); ++wait) {
+      assert.ok(wait < 500, `${path} saved within 5 s`);
+      await new Promise((resolve) => setTimeout(resolve, 10));
+    }
+    return readFileSync(join(folder, path), "utf8");
   };
   const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
   const paramsOf = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params);
@@ -361,27 +394,50 @@ try {
   console.log(`fireball.json: a slider drag drew a ${draftSide}x${draftSide} draft, refined to 256x256 on the pause`);
 
   // Opening a graph with a check error while the fireball's preview is on
-  // its way: the fireball's picture is never drawn under the new name.
+  // its way: the fireball's picture is never drawn under the new name. The
+  // preview request is held back until the other graph is open, so that
+  // it is surely on its way then, and answered after.
   const typeError = JSON.parse(readFileSync(join(source, "graphs", "marble.json"), "utf8"));
   typeError.outputs.color = "no_such_node";
   writeFileSync(join(folder, "type_error.json"), JSON.stringify(typeError, null, 2));
+  let held = null;
+  const holdPreview = (request) => {
+    if (!held && request.url().includes("/api/preview") && request.url().includes("slot=main")) held = request;
+    else request.continue();
+  };
+  await page.setRequestInterception(true);
+  page.on("request", holdPreview);
   await dragSlider("scale", 3);
+  for (let wait = 0; !held; ++wait) {
+    assert.ok(wait < 500, "the drag asked for a preview within 5 s");
+    await new Promise((resolve) => setTimeout(resolve, 10));
+  }
   await page.evaluate(() => window.shadetreeEditor.open("type_error.json"));
+  await held.continue().catch(() => {});  // the page may have given up on it
   await new Promise((resolve) => setTimeout(resolve, 1500));
+  page.off("request", holdPreview);
+  await page.setRequestInterception(false);
   assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "type_error.json");
   assert.ok(await page.evaluate(() => document.getElementById("status").classList.contains("error")), "the check error shows");
   assert.equal(await previewPixels(), 0, "no earlier graph's picture in the preview");
   console.log("opened type_error.json during a fireball preview: its error shows, the fireball's picture does not");
 
-  // A malformed file never becomes the document: Save still writes the
-  // graph that is open, and the broken file keeps its bytes.
-  writeFileSync(join(folder, "broken.json"), "{\"format\": ");
+  // Neither a malformed file nor JSON that is no graph becomes the
+  // document: chosen in the list, each is refused, the open graph stays
+  // open, and Ctrl+S writes that graph, not over the file chosen.
   await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
   await page.waitForFunction(() => window.shadetreeEditor.state.previews > 0 && window.shadetreeEditor.state.path === "fireball.json");
-  await page.evaluate(() => window.shadetreeEditor.open("broken.json"));
-  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "fireball.json", "the open graph stays open");
-  assert.match(await page.evaluate(() => document.getElementById("status").textContent), /broken\.json is not a graph file/);
-  assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "fireball.json");
+  for (const [name, bytes] of [["broken.json", "{\"format\": "], ["not_a_graph.json", notAGraph]]) {
+    await page.select("#graph-list", `wrong/${name}`);
+    await page.waitForFunction((name) => document.getElementById("status").textContent.includes(`${name} is not a graph file`),
+                               { timeout: 5000 }, name);
+    assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "fireball.json", "the open graph stays open");
+    assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "fireball.json");
+    const refusal = await page.evaluate(() => document.getElementById("status").textContent);
+    await saveWithKeys("fireball.json");
+    assert.equal(readFileSync(join(folder, "wrong", name), "utf8"), bytes, `${name} is untouched`);
+    console.log(`${refusal}; Ctrl+S saved fireball.json and left ${name} untouched`);
+  }
   await dragSlider("scale", 2);
   await settled();
   const leaving = await page.evaluate(() => {
@@ -390,11 +446,80 @@ try {
     return event.defaultPrevented;
   });
   assert.ok(leaving, "leaving the page with unsaved edits asks first");
-  assert.equal(await page.evaluate(() => window.shadetreeEditor.save()), true);
-  assert.equal(readFileSync(join(folder, "broken.json"), "utf8"), "{\"format\": ", "the broken file is untouched");
+  await saveWithKeys("fireball.json");
   const fireball = spawnSync(binary, ["check", join(folder, "fireball.json")], { encoding: "utf8" });
   assert.equal(fireball.status, 0, fireball.stderr);
-  console.log("broken.json refused on open: fireball.json stays open, unsaved edits guard the page, Save writes fireball.json");
+  console.log("Ctrl+S after the refusals saved fireball.json, which checks; unsaved edits guard the page");
+
+  // Every gallery file, chosen in the list and saved with Ctrl+S unedited,
+  // is written back byte for byte.
+  const roundTripStarted = performance.now();
+  const gallery = readdirSync(join(source, "graphs")).filter((name) => name.endsWith(".json"));
+  for (const name of gallery) {
+    const path = `roundtrip/${name}`;
+    await page.select("#graph-list", path);
+    await page.waitForFunction((path) => window.shadetreeEditor.state.path === path, { timeout: 10000 }, path);
+    assert.equal(await saveWithKeys(path), readFileSync(join(source, "graphs", name), "utf8"), `${path} byte for byte`);
+  }
+  console.log(`${gallery.length} gallery files opened and saved unedited: each byte for byte the same ` +
+              `(${((performance.now() - roundTripStarted) / 1000).toFixed(1)} s)`);
+
+  // One param default typed in its field: one line of the file changes.
+  await page.select("#graph-list", "roundtrip/fireball.json");
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "roundtrip/fireball.json", { timeout: 10000 });
+  await page.click('input[title="strength: exact value"]', { clickCount: 3 });
+  await page.keyboard.type("1.25");
+  await page.keyboard.press("Tab");
+  const edited = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
+  const original = readFileSync(join(source, "graphs", "fireball.json"), "utf8").split("\n");
+  assert.equal(edited.length, original.length);
+  const changed = original.flatMap((line, i) => (line === edited[i] ? [] : [[line, edited[i]]]));
+  assert.deepEqual(changed, [[
+    '    "strength": {"type": "float", "default": 0.9, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+    '    "strength": {"type": "float", "default": 1.25, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+  ]]);
+  console.log("fireball.json's strength set to 1.25 in its field and saved: that one line of the file changed");
+
+  // Constants on unwired inputs, in the node panel: ball's radius (1.05
+  // in the file) and its center (not in the file: the op's default, 0).
+  await page.evaluate(() => window.shadetreeEditor.canvas.selectNode(window.shadetreeEditor.viewOf("ball")));
+  await page.waitForSelector('input[name="ball.radius"]', { timeout: 5000 });
+  assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05");
+  assert.equal(await page.$('input[name="ball.p"]'), null, "a wired input has no field");
+  assert.equal(await page.$eval('input[name="ball.center.1"]', (field) => `${field.value}|${field.placeholder}`), "|0");
+  const ballInputs = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().nodes.find((n) => n.id === "ball").in);
+  const typeInto = async (name, text) => {
+    await page.click(`input[name="${name}"]`, { clickCount: 3 });
+    await page.keyboard.type(text);
+  };
+  const previewsBeforeRadius = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  await typeInto("ball.radius", "1.2");
+  await page.keyboard.press("Tab");
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeRadius);
+  assert.deepEqual(await ballInputs(), { p: "scaled", radius: 1.2, softness: 0.9 });
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.viewOf("ball").inputs.find((slot) => slot.name === "radius").label),
+               "radius: float = 1.2");
+  for (const [component, text] of ["0", "0.2", "0"].entries()) await typeInto(`ball.center.${component}`, text);
+  await page.keyboard.press("Tab");
+  assert.deepEqual((await ballInputs()).center, [0, 0.2, 0]);
+  await page.evaluate(() => document.activeElement.blur());
+  await settled();
+  await pressKeys("Control", "z");
+  assert.equal((await ballInputs()).center, undefined, "undo takes the center away");
+  await pressKeys("Control", "z");
+  assert.equal((await ballInputs()).radius, 1.05, "and then the radius back");
+  assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05", "the panel follows undo");
+  await pressKeys("Control", "Shift", "z");
+  await pressKeys("Control", "Shift", "z");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null && window.shadetreeEditor.state.previews > 0,
+                             { timeout: 10000 });
+  const withConstants = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
+  const changedByConstants = original.flatMap((line, i) => (line === withConstants[i] ? [] : [withConstants[i]]));
+  assert.deepEqual(changedByConstants, [
+    '    "strength": {"type": "float", "default": 1.25, "min": 0, "max": 4, "doc": "how far turbulence pushes the surface in"},',
+    '    {"id": "ball", "op": "sphere", "in": {"p": "scaled", "radius": 1.2, "softness": 0.9, "center": [0, 0.2, 0]}},',
+  ]);
+  console.log("ball's radius typed as 1.2 and its center as 0, 0.2, 0 in the node panel: previewed, undone, redone, saved as one line");
 
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
@@ -432,6 +557,7 @@ try {
     console.log(`spline_probe.json, ${basis}: the curve drawn agrees with the server's render at 16 x (within ${worst.toFixed(2)}/255)`);
   }
   assert.deepEqual(errors, [], "no script errors");
+  console.log(`editor test: ${((performance.now() - testStarted) / 1000).toFixed(1)} s`);
 } catch (error) {
   failed = true;
   console.error(error);
