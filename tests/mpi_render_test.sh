@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # shadetree render under a real mpirun (Open MPI): two ranks write exactly
-# the bytes one process writes, for a shared frame of every kind and for a
-# sequence shared frame by frame; a failing rank ends the job with one
-# line, a failure status and no output.
+# the bytes one process writes, for a shared frame of every kind and for
+# sequences shared frame by frame, resumed chunks included; a failing rank
+# ends the job with one line, a failure status and no output.
 # Usage: mpi_render_test.sh SHADETREE SOURCE_DIR
 set -uo pipefail
 shadetree="$1"
@@ -33,16 +33,41 @@ for graph in marble donut_bumpy cloud_over_floor tribble sunset_sky; do
   grep -q "2 ranks, tiles [0-9]* + [0-9]*" "$work/log" || fail "$graph: the render line does not give the ranks' tiles"
 done
 
-# A sequence shared frame by frame: the same files, each frame rendered once.
-mkdir -p "$work/one" "$work/two"
-"$shadetree" render "$graphs/fireball.json" -o "$work/one/f.png" --size 48x48 --frames 1-9x2 2> /dev/null
-"${ranks[@]}" "$shadetree" render "$graphs/fireball.json" -o "$work/two/f.png" --size 48x48 --frames 1-9x2 \
-  --threads 1 2> "$work/log" || fail "sequence: mpirun failed"
-for frame in 0001 0003 0005 0007 0009; do
-  cmp -s "$work/one/f.$frame.png" "$work/two/f.$frame.png" || fail "sequence: frame $frame differs"
+# A 1024x1024 frame of each kind shared by tile.
+for graph in marble donut_bumpy fireball; do
+  "$shadetree" render "$graphs/$graph.json" -o "$work/one_$graph.1024.png" --size 1024x1024 2> /dev/null
+  "${ranks[@]}" "$shadetree" render "$graphs/$graph.json" -o "$work/two_$graph.1024.png" --size 1024x1024 \
+    --threads 1 2> "$work/log" || fail "$graph at 1024x1024: mpirun failed: $(cat "$work/log")"
+  cmp -s "$work/one_$graph.1024.png" "$work/two_$graph.1024.png" || fail "$graph at 1024x1024: other bytes"
 done
-[ "$(grep -c -- '-> ' "$work/log")" = 5 ] || fail "sequence: not 5 frame lines: $(cat "$work/log")"
-grep -q "rank 1 of 2" "$work/log" || fail "sequence: rank 1 rendered no frame"
+
+# Sequences of each kind shared frame by frame: the same files, each frame
+# rendered once.
+for graph in marble donut_bumpy fireball; do
+  mkdir -p "$work/one_$graph" "$work/two_$graph"
+  "$shadetree" render "$graphs/$graph.json" -o "$work/one_$graph/f.####.png" --size 48x48 --frames 0..7 2> /dev/null
+  "${ranks[@]}" "$shadetree" render "$graphs/$graph.json" -o "$work/two_$graph/f.####.png" --size 48x48 \
+    --frames 0..7 --threads 1 2> "$work/log" || fail "$graph sequence: mpirun failed"
+  for frame in 0000 0001 0002 0003 0004 0005 0006 0007; do
+    cmp -s "$work/one_$graph/f.$frame.png" "$work/two_$graph/f.$frame.png" || fail "$graph sequence: frame $frame"
+  done
+  [ "$(grep -c -- '-> ' "$work/log")" = 8 ] || fail "$graph sequence: not 8 frame lines: $(cat "$work/log")"
+  grep -q "rank 1 of 2" "$work/log" || fail "$graph sequence: rank 1 rendered no frame"
+done
+
+# A chunk of a stepped list, resumed: the frames that exist stay as they
+# are, and the chunk's others are written once.
+mkdir -p "$work/resume"
+"$shadetree" render "$graphs/marble.json" -o "$work/resume/f.png" --size 32x32 --frames 1-20x3 --chunk 4-13 \
+  2> /dev/null
+rm "$work/resume/f.0007.png"
+touch -d '2001-01-01' "$work/resume/f.0004.png"
+"${ranks[@]}" "$shadetree" render "$graphs/marble.json" -o "$work/resume/f.png" --size 32x32 --frames 1-20x3 \
+  --chunk 4-13 --skip-existing --threads 1 2> "$work/log" || fail "resume: mpirun failed"
+[ "$(ls "$work/resume")" = "$(printf 'f.0004.png\nf.0007.png\nf.0010.png\nf.0013.png')" ] ||
+  fail "resume: $(ls "$work/resume")"
+[ "$(grep -c -- '-> ' "$work/log")" = 1 ] || fail "resume: not one frame rendered: $(cat "$work/log")"
+[ "$(stat -c %Y "$work/resume/f.0004.png")" = "$(date -d '2001-01-01' +%s)" ] || fail "resume: f.0004 was rewritten"
 
 # A frame a rank cannot write (a folder is in the way): one error line,
 # status 1, and the job stops handing out frames.
