@@ -16,7 +16,11 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
 # EXR files record when they were written; this makes them byte-comparable.
 export SOURCE_DATE_EPOCH=1700000000
-ranks=(mpirun -q -n 2 --oversubscribe)
+# Under the sanitizer build the ranks check all but leaks: Open MPI's
+# threads keep allocations past MPI_Finalize, from frames LeakSanitizer
+# cannot name (so no suppression matches them). The single-process runs
+# here, and the rest of the suite, check leaks as ever.
+ranks=(env "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" mpirun -q -n 2 --oversubscribe)
 failures=0
 fail() { echo "FAILED: $*"; failures=$((failures + 1)); }
 
