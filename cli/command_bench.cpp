@@ -28,6 +28,7 @@
 #include "pipeline/compile_graph.h"
 #include "render/graph_kinds.h"
 #include "render/texture_driver.h"
+#include "schedule/thread_arena.h"
 #include "schedule/thread_bindings.h"
 
 namespace shadetree {
@@ -65,7 +66,7 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Uni
   constexpr std::size_t chunk = 4096;
   OutputBuffers output_buffers(samples.count, kernel.outputs());
   const std::vector<float*> outputs(output_buffers.planes(), output_buffers.planes() + kernel.outputs().plane_count);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(arena_concurrency(threads));
   ThreadBindings bindings(kernel, params.data(), uniforms);
   auto run_once = [&] {
     arena.execute([&] {

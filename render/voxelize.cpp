@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "schedule/thread_arena.h"
 #include "schedule/thread_bindings.h"
 #include "render/volume_driver.h"
 
@@ -35,7 +36,7 @@ Result<VoxelGrid> voxelize(const Kernel& kernel, const std::vector<float>& param
 
   ThreadBindings bindings(kernel, params.data(), volume_uniforms(options.frame, grid.voxel_size));
   std::atomic<int> slices_done{0};
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(arena_concurrency(options.threads));
   arena.execute([&] {
     tbb::parallel_for(0, grid.size[2], [&](int k) {
       SampleBuffers inputs(slice, kernel.reads());

@@ -5,7 +5,8 @@
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
+
+#include "schedule/thread_arena.h"
 
 namespace shadetree {
 
@@ -24,7 +25,7 @@ Status for_each_tile(int width, int height, int tile_size, int threads, const st
     if (claims) claims->rendered(static_cast<long>(ty) * tiles_x + tx, tile);
     if (progress) progress(ProgressCount{done, tile_count, all_items});
   };
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(arena_concurrency(threads));
   arena.execute([&] {
     if (claims) {
       // Each of the arena's threads claims tiles until none is left.
