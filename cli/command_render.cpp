@@ -332,7 +332,8 @@ ExitStatus render(const RenderArguments& arguments) {
 }  // namespace
 
 void add_render_command(CLI::App& app, CommandRunner& run) {
-  auto* command = app.add_subcommand("render", "render a graph of any kind (texture, surface, volume, environment) to a PNG or EXR image");
+  auto* command = app.add_subcommand("render", "render a graph of any kind (texture, surface, volume, environment) to a PNG or EXR image; "
+                                                     "started by mpirun, its ranks share the frames or tiles");
   auto arguments = std::make_shared<RenderArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
   command->add_option("-o,--output", arguments->output,
