@@ -184,6 +184,8 @@ function showHistoryState() {
 // A change of a scope's sources (params, function inputs): applied to the
 // whole document, then the canvas and panels drawn anew.
 function restructure(change) {
+  // Typing just before (a constant, say) stays a step of its own.
+  history.flush();
   graphView.rememberPositions();
   state.doc = graphView.document();
   change(state.doc);
@@ -430,7 +432,7 @@ async function update() {
     const paused = performance.now() - state.lastInteraction;
     refine = setTimeout(() => scheduleUpdate(), Math.max(0, refineDelayMs - paused));
   } else {
-    refreshThumbnails(doc, previewed === doc ? previewBody : JSON.stringify(view.apply(doc)));
+    refreshThumbnails(doc, previewBody, previewed === doc);
   }
 }
 
@@ -519,17 +521,24 @@ function thumbnailKey(doc, id, render) {
                          render, context]);
 }
 
-function refreshThumbnails(doc, previewBody) {
+// previewBody: the preview's text; whole: whether it is all of `doc`.
+function refreshThumbnails(doc, previewBody, whole) {
   // A volume graph's thumbnails are slices through its bounds: the camera
   // does not change them.
   const render = doc.kind === "volume" ? doc.render?.volume : JSON.parse(previewBody).render;
+  // The server probes a node only in a document that checks as a whole.
+  // When only what the outputs read checks, a node is probed in that and
+  // what the node reads: its picture, or its error, then depends on
+  // nothing outside its key, under which it is kept.
+  const bodyOf = (id) => whole ? () => previewBody
+                               : () => JSON.stringify(view.apply(withoutUnreadNodes(doc, state.scope, [id])));
   const jobs = graphView.opViews().map((v) => ({
     cacheKey: thumbnailCacheKey(v.shadetreeId),
     key: thumbnailKey(doc, v.shadetreeId, render),
     url: `/api/preview?${pathQuery()}node=${encodeURIComponent(v.shadetreeId)}&width=${thumbnailSide}&height=${thumbnailSide}` +
          `&frame=${state.frame}&slot=thumb-${encodeURIComponent(thumbnailCacheKey(v.shadetreeId))}` +
          (state.scope ? `&function=${encodeURIComponent(state.scope)}` : ""),
-    body: previewBody,
+    body: bodyOf(v.shadetreeId),
   }));
   thumbnails.refresh(jobs).catch((error) => setStatus(`thumbnails: ${error}`, true));
 }

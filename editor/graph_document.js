@@ -43,11 +43,12 @@ export function upstreamOf(body, references) {
   return upstream;
 }
 
-// The document without the nodes no output reads, in every body.
-export function withoutUnreadNodes(doc) {
+// The document without the nodes no output reads, in every body; in the
+// body of `scope` (null: the main graph), the nodes `alsoRead` reads stay.
+export function withoutUnreadNodes(doc, scope = null, alsoRead = []) {
   const pruned = structuredClone(doc);
-  for (const body of [pruned, ...Object.values(pruned.functions || {})]) {
-    const read = upstreamOf(body, Object.values(body.outputs || {}));
+  for (const [name, body] of [[null, pruned], ...Object.entries(pruned.functions || {})]) {
+    const read = upstreamOf(body, [...Object.values(body.outputs || {}), ...(name === scope ? alsoRead : [])]);
     body.nodes = body.nodes.filter((node) => read.has(node.id));
   }
   return pruned;

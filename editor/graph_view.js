@@ -352,17 +352,36 @@ export class GraphView {
   }
 
   // Columns left to right, each centred on one line as wires mostly run
-  // along it; remembered places win.
+  // along it; remembered places win. A column taller than the view and
+  // than the layout would be with the view's proportions is wrapped into
+  // columns side by side: ocean's longest would not fit at the least zoom.
   layOut(columns) {
     const remembered = this.positions.get(this.scopeKey) || new Map();
-    const heightOf = (column) => column.reduce((sum, v) => sum + v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap, 0);
-    const tallest = Math.max(...columns.map(heightOf));
+    const rowOf = (v) => v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap;
+    const [width, height] = this.viewSize();
+    const area = columns.flat().reduce((sum, v) => sum + (v.size[0] + columnGap) * rowOf(v), 0);
+    const wrapAt = Math.max(height, Math.sqrt(area * height / width));
+    const wrapped = columns.flatMap((column) => {
+      const parts = [[]];
+      let used = 0;
+      for (const v of column) {
+        if (used + rowOf(v) > wrapAt && parts.at(-1).length > 0) {
+          parts.push([]);
+          used = 0;
+        }
+        parts.at(-1).push(v);
+        used += rowOf(v);
+      }
+      return parts;
+    });
+    const heightOf = (column) => column.reduce((sum, v) => sum + rowOf(v), 0);
+    const tallest = Math.max(...wrapped.map(heightOf));
     let x = 30;
-    for (const column of columns) {
+    for (const column of wrapped) {
       let y = 40 + (tallest - heightOf(column)) / 2;
       for (const v of column) {
         v.pos = remembered.get(positionKey(v)) || [x, y];
-        y += v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap;
+        y += rowOf(v);
         this.graph.add(v);
       }
       x += Math.max(...column.map((v) => v.size[0])) + columnGap;
