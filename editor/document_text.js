@@ -141,10 +141,12 @@ class Writer {
   }
 }
 
-// `text` (a graph file) rewritten to hold `doc`: only what differs is new.
+// `text` (a graph file) rewritten to hold `doc`: only what differs is new;
+// with no text (a new graph), `doc` written as the gallery writes graphs.
 export function documentText(text, doc) {
-  const ast = parse(text, { mode: "json", ranges: true });
   // As it will be read back: keys whose value is undefined are not written.
   const value = JSON.parse(JSON.stringify(doc));
+  if (text === null) return `${stringify(value, { indent: "  ", maxLength: lineWidth })}\n`;
+  const ast = parse(text, { mode: "json", ranges: true });
   return text.slice(0, ast.body.range[0]) + new Writer(text).render(ast.body, value) + text.slice(ast.body.range[1]);
 }

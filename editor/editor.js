@@ -5,12 +5,16 @@
 // (server/editor_server.h). The params panel edits the document's params:
 // a change of a value or range reaches only the uniform block, so a
 // slider drag re-renders without recompiling.
+import { LGraphCanvas } from "/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js";
 import { api, errorOf, imageOf } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
+import { copyNodes, pasteNodes } from "./clipboard.js";
 import { documentText } from "./document_text.js";
-import { GraphView, parseReference, scopeBody, sourcesOf } from "./graph_view.js";
+import { scopeBody, sourcesOf, upstreamOf, withoutUnreadNodes } from "./graph_document.js";
+import { GraphView } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
+import { element } from "./dom.js";
 import { inputValueRows } from "./input_values.js";
 import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
@@ -33,11 +37,14 @@ const framesPerSecond = 24;  // nodes/globals.h: time = frame / 24
 
 const state = {
   library: new Map(),   // op name -> its entry of /api/nodes
-  path: null,           // the graph file open, relative to the served folder
+  kinds: new Map(),     // graph kind -> its entry of /api/nodes: output contract, render fields
+  path: null,           // the graph file open, relative to the served folder (null: a new graph)
   doc: null,            // the graph file's JSON
   scope: null,          // the function shown on the canvas, or null: the main graph
   previews: 0,          // previews drawn
   lastError: null,      // the checker's diagnostic of the current document, or null
+  unreadError: null,    // or of a node no output reads, which does not stop the preview
+  keepLayout: false,    // whether saves write the nodes' places (the file had them, or the user placed nodes)
   sequence: 0,          // of the latest update; older previews are dropped
   opened: 0,            // files opened: a preview of an earlier one is never drawn
   frame: 0,             // sent with previews of graphs that use frame or time
@@ -62,8 +69,22 @@ const graphView = new GraphView(byId("graph-canvas"), {
     edited();
     showNodePanel(graphView.viewOf(graphView.selectedId()));
   },
-  onMove: () => history.touch(snapshot),
+  onPlace: () => {
+    state.keepLayout = true;
+    history.touch(snapshot);
+  },
   thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
+  nodeMenu: (v) => [
+    { content: "Duplicate (Ctrl+D)", callback: () => duplicate() },
+    { content: "Copy (Ctrl+C)", callback: () => copy() },
+    ...(state.doc.functions?.[v.op] ? [{ content: `Edit ${v.op}`, callback: () => showScope(v.op) }] : []),
+  ],
+  canvasMenu: () => [
+    { content: "Add Node", has_submenu: true, callback: LGraphCanvas.onMenuAdd },
+    { content: "Paste (Ctrl+V)", disabled: !clipboard, callback: () => paste() },
+    { content: "Select all (Ctrl+A)", callback: () => canvas.selectItems() },
+    { content: "Frame all (F)", callback: () => graphView.fit() },
+  ],
 });
 const { graph, canvas } = graphView;
 const status = document.getElementById("status");
@@ -95,9 +116,26 @@ function functionSignature(doc, name) {
 
 // --- edits and history ---
 
-// The document, and where its nodes are on the canvas: a move is a step
-// too, though places are not part of the file.
-const snapshot = () => ({ text: JSON.stringify(graphView.document()), layout: graphView.layout(), scope: state.scope });
+// The document as a save writes it: with the nodes' places once the file
+// has them or the user placed a node, so that other edits of a file
+// without places change only what they change.
+function fileDocument() {
+  const doc = graphView.document();
+  if (state.keepLayout) doc.layout = graphView.layoutSection(doc);
+  return doc;
+}
+
+// The document, and where the nodes of every scope shown are on the
+// canvas: a move is a step too.
+const snapshot = () => ({ text: JSON.stringify(fileDocument()), layout: graphView.layout(), scope: state.scope });
+
+// The places of a document's "layout" section go to the canvas, which
+// keeps them while the document is edited.
+function takeLayout(doc) {
+  state.keepLayout = Boolean(doc.layout);
+  delete doc.layout;
+  return doc;
+}
 
 // Every change of the document: into the history and the preview.
 // interactive: part of a drag (or of typing), whose edits make one step
@@ -114,7 +152,7 @@ function restore(step) {
   graphView.rememberPositions();
   graphView.restoreLayout(step.snapshot.layout);
   const selected = graphView.selectedId();
-  state.doc = JSON.parse(step.snapshot.text);
+  state.doc = takeLayout(JSON.parse(step.snapshot.text));
   state.scope = step.scope && state.doc.functions?.[step.scope] ? step.scope : null;
   showScopes();
   graphView.show();
@@ -146,6 +184,8 @@ function showHistoryState() {
 // A change of a scope's sources (params, function inputs): applied to the
 // whole document, then the canvas and panels drawn anew.
 function restructure(change) {
+  // Typing just before (a constant, say) stays a step of its own.
+  history.flush();
   graphView.rememberPositions();
   state.doc = graphView.document();
   change(state.doc);
@@ -161,7 +201,7 @@ function showNodePanel(v) {
   const panel = byId("node-panel");
   const node = v?.shadetreeId && graphView.docNode(v.shadetreeId);
   if (!node) {
-    panel.replaceChildren();
+    panel.replaceChildren(...(state.doc ? graphFields() : []));
     return;
   }
   const entry = state.library.get(node.op);
@@ -196,6 +236,45 @@ function showNodePanel(v) {
     onConstant: (input, value) => graphView.showConstant(node.id, input, value),
     onEdit: (interactive) => edited({ interactive }),
   }));
+}
+
+// With no node selected: the graph's name, doc and kind. A new kind keeps
+// the nodes and outputs (the checker names what it refuses) and drops the
+// render fields it does not take; a volume is given bounds, which it needs.
+function graphFields() {
+  const heading = element("h3", { textContent: "Graph" });
+  const name = element("input", { name: "graph name", value: state.doc.name ?? "", size: 24 });
+  name.addEventListener("input", () => {
+    state.doc.name = name.value;
+    edited({ interactive: true });
+  });
+  const doc = element("textarea", { name: "graph doc", value: state.doc.doc ?? "", rows: 2 });
+  doc.addEventListener("input", () => {
+    if (doc.value) state.doc.doc = doc.value;
+    else delete state.doc.doc;
+    edited({ interactive: true });
+  });
+  const kind = element("select", { name: "graph kind" }, [...state.kinds.keys()].map((k) => new Option(k, k)));
+  kind.value = state.doc.kind;
+  kind.title = state.kinds.get(state.doc.kind)?.doc ?? "";
+  kind.addEventListener("change", () => restructure((changed) => setKind(changed, kind.value)));
+  const outputs = element("ul", { className: "doc" }, (state.kinds.get(state.doc.kind)?.outputs || []).map((output) =>
+    element("li", { textContent: `${output.name}${output.required ? " (required)" : ""}: ${output.doc}` })));
+  return [heading,
+          element("label", { className: "inline" }, ["name ", name]),
+          element("label", { className: "inline" }, ["doc ", doc]),
+          element("label", { className: "inline" }, ["kind ", kind]),
+          element("p", { className: "doc", textContent: "Outputs (wire them into the outputs node):" }), outputs];
+}
+
+const defaultVolume = { bounds: { min: [-1, -1, -1], max: [1, 1, 1] } };
+
+function setKind(doc, kind) {
+  doc.kind = kind;
+  const fields = state.kinds.get(kind).render;
+  for (const field of Object.keys(doc.render || {})) if (!fields.includes(field)) delete doc.render[field];
+  if (kind === "volume" && !doc.render?.volume) doc.render = { ...doc.render, volume: structuredClone(defaultVolume) };
+  if (doc.render && Object.keys(doc.render).length === 0) delete doc.render;
 }
 
 // Integer and choice attributes (a noise seed, an image's wrap) as fields.
@@ -261,7 +340,19 @@ let inflight = null;       // the main preview request under way: {controller, s
 let previewRequests = 0;   // main preview requests made
 let previewDrawn = 0;      // the latest of them drawn
 const patienceMs = 150;
-const lastCheck = { key: null, result: null };
+const checks = new Map();  // the last few checks' answers, by path and body
+
+// The server's check of `body` (the document's text) as the file open.
+async function checkOf(body) {
+  const key = `${state.path}\n${body}`;
+  if (!checks.has(key)) {
+    const response = await api("POST", `/api/check?${pathQuery().slice(0, -1)}`, body);
+    const result = response.ok ? await response.json() : { ok: false, error: { text: await errorOf(response) } };
+    if (checks.size >= 4) checks.delete(checks.keys().next().value);
+    checks.set(key, result);
+  }
+  return checks.get(key);
+}
 
 function scheduleUpdate({ interactive = false } = {}) {
   if (!state.doc) return;
@@ -291,30 +382,37 @@ async function update() {
   thumbnails.cancel();
   clearTimeout(refine);
   const doc = graphView.document();
-  const body = JSON.stringify(doc, null, 2);
-  const checkKey = `${state.path}\n${body}`;
+  // A node no output reads (one just added, say) must not stop the
+  // preview: when the document fails the check, what its outputs read is
+  // checked and previewed, and the first error is shown on its node as a
+  // warning. The page chooses what to send, as it does for the preview's
+  // view, so that the server's check stays the command line's (which
+  // refuses the file as saved until the node is mended or deleted).
+  let check, previewed = doc;
   try {
-    if (lastCheck.key !== checkKey) {
-      const response = await api("POST", `/api/check?${pathQuery().slice(0, -1)}`, body);
-      const result = response.ok ? await response.json() : { ok: false, error: { text: await errorOf(response) } };
-      if (sequence !== state.sequence) return;
-      lastCheck.key = checkKey;
-      lastCheck.result = result;
+    check = await checkOf(JSON.stringify(doc, null, 2));
+    if (!check.ok && check.parsed) {
+      const read = withoutUnreadNodes(doc);
+      const readCheck = await checkOf(JSON.stringify(read, null, 2));
+      // Else the error that stops what the outputs read is the one to mend.
+      [check, previewed] = readCheck.ok ? [{ ok: true, unread: check.error }, read] : [readCheck, doc];
     }
+    if (sequence !== state.sequence) return;
   } catch (error) {
     if (sequence === state.sequence) setStatus(String(error), true);
     return;
   }
-  const check = lastCheck.result;
   state.lastError = check.ok ? null : check.error;
-  graphView.markError(state.lastError);
-  byId("diagnostic").textContent = state.lastError ? state.lastError.text : "";
+  state.unreadError = check.unread ?? null;
+  graphView.markError();
+  byId("diagnostic").textContent = state.lastError ? state.lastError.text
+                                 : state.unreadError ? `No output reads ${state.unreadError.node}: ${state.unreadError.text}` : "";
   if (!check.ok) {
     setStatus(check.error.text, true);
     return;
   }
   const side = previewSide();
-  const previewBody = JSON.stringify(view.apply(doc));
+  const previewBody = JSON.stringify(view.apply(previewed));
   const previewKey = `${side} ${state.frame}\n${previewBody}`;
   // Unless this very picture is shown and no other is on its way.
   const needed = () => inflight || previewKey !== state.drawnKey;
@@ -334,7 +432,7 @@ async function update() {
     const paused = performance.now() - state.lastInteraction;
     refine = setTimeout(() => scheduleUpdate(), Math.max(0, refineDelayMs - paused));
   } else {
-    refreshThumbnails(doc, previewBody);
+    refreshThumbnails(doc, previewBody, previewed === doc);
   }
 }
 
@@ -374,7 +472,8 @@ async function requestPreview(body, side, key) {
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (kernel: ${response.headers.get("X-Kernel")})` +
       (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "");
     byId("reset-view").disabled = !view.changed;
-    setStatus(`${state.path || "untitled"}: ok`, false);
+    setStatus(`${state.path || "untitled"}: ok` + (state.unreadError ? ` (no output reads ${state.unreadError.node}, which has an error)` : ""),
+              false);
     return true;
   } catch (error) {
     if (error.name !== "AbortError" && opened === state.opened) setStatus(String(error), true);
@@ -408,20 +507,10 @@ const thumbnailCacheKey = (id) => `${graphView.scopeKey}/${id}`;
 // params they read, the functions they call, the frame if time is read,
 // and the render settings.
 function thumbnailKey(doc, id, render) {
-  const nodes = new Map(scopeBody(doc, state.scope).nodes.map((n) => [n.id, n]));
-  const upstream = new Map();
-  const dollars = new Set();
-  const stack = [id];
-  while (stack.length > 0) {
-    const node = nodes.get(stack.pop());
-    if (!node || upstream.has(node.id)) continue;
-    upstream.set(node.id, node);
-    for (const value of Object.values(node.in || {})) {
-      if (typeof value !== "string") continue;
-      if (value.startsWith("$")) dollars.add(value.slice(1));
-      else stack.push(parseReference(value).id);
-    }
-  }
+  const upstream = upstreamOf(scopeBody(doc, state.scope), [id]);
+  const dollars = new Set([...upstream.values()].flatMap((node) => Object.values(node.in || {}))
+                                                .filter((value) => typeof value === "string" && value.startsWith("$"))
+                                                .map((value) => value.slice(1)));
   const calls = [...upstream.values()].some((n) => doc.functions?.[n.op]);
   const params = [...dollars].map((name) => [name, doc.params?.[name]?.default]);
   const timed = usesTime([...upstream.values()], calls ? doc.functions : {});
@@ -432,17 +521,24 @@ function thumbnailKey(doc, id, render) {
                          render, context]);
 }
 
-function refreshThumbnails(doc, previewBody) {
+// previewBody: the preview's text; whole: whether it is all of `doc`.
+function refreshThumbnails(doc, previewBody, whole) {
   // A volume graph's thumbnails are slices through its bounds: the camera
   // does not change them.
   const render = doc.kind === "volume" ? doc.render?.volume : JSON.parse(previewBody).render;
+  // The server probes a node only in a document that checks as a whole.
+  // When only what the outputs read checks, a node is probed in that and
+  // what the node reads: its picture, or its error, then depends on
+  // nothing outside its key, under which it is kept.
+  const bodyOf = (id) => whole ? () => previewBody
+                               : () => JSON.stringify(view.apply(withoutUnreadNodes(doc, state.scope, [id])));
   const jobs = graphView.opViews().map((v) => ({
     cacheKey: thumbnailCacheKey(v.shadetreeId),
     key: thumbnailKey(doc, v.shadetreeId, render),
     url: `/api/preview?${pathQuery()}node=${encodeURIComponent(v.shadetreeId)}&width=${thumbnailSide}&height=${thumbnailSide}` +
          `&frame=${state.frame}&slot=thumb-${encodeURIComponent(thumbnailCacheKey(v.shadetreeId))}` +
          (state.scope ? `&function=${encodeURIComponent(state.scope)}` : ""),
-    body: previewBody,
+    body: bodyOf(v.shadetreeId),
   }));
   thumbnails.refresh(jobs).catch((error) => setStatus(`thumbnails: ${error}`, true));
 }
@@ -531,12 +627,26 @@ async function open(path) {
   const check = await checked.json();
   if (!check.ok && !check.parsed) return refuse(check.error.message);
   if (attempt !== opening) return;
+  await showDocument(path, doc, text);
+}
+
+// A new graph of `kind`, with no nodes and no file until saved as one.
+async function newGraph(kind) {
+  const doc = { format: "shadetree-graph", version: 1, name: "untitled", kind, nodes: [], outputs: {} };
+  setKind(doc, kind);
+  ++opening;
+  await showDocument(null, doc, null);
+}
+
+// `doc`, read from `text` of file `path` (null: new), becomes the document.
+async function showDocument(path, doc, text) {
   setPlaying(false);
   state.opened += 1;
   inflight?.controller.abort();
   previewCanvas.getContext("2d").clearRect(0, 0, previewCanvas.width, previewCanvas.height);
   state.path = path;
-  state.doc = doc;
+  graphView.loadLayout(doc.layout);
+  state.doc = takeLayout(doc);
   state.fileText = text;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
@@ -545,14 +655,16 @@ async function open(path) {
   state.fullPreviewMs = null;
   state.draftMsPerPixel = null;
   state.lastError = null;
-  graphView.positions.clear();
+  state.unreadError = null;
   thumbnails.cancel();
   thumbnails.cache.clear();
   view.clear();
   const size = state.doc.render?.size || [512, 512];
   byId("export-width").value = size[0];
   byId("export-height").value = size[1];
-  selectInGraphList(path);
+  if (path) selectInGraphList(path);
+  else byId("graph-list").value = "";
+  showPalette();
   showScopes();
   graphView.show({ fit: true });
   paramsPanel.show();
@@ -564,7 +676,9 @@ async function open(path) {
   await update();
 }
 
+// A new graph is saved as a file named first.
 async function save() {
+  if (state.doc && !state.path) return showSaveAs(true);
   return write(state.path, false);
 }
 
@@ -576,7 +690,7 @@ async function write(path, isNew) {
   if (!state.doc) return false;
   history.flush();
   const opened = state.opened;
-  const doc = graphView.document();
+  const doc = fileDocument();
   const text = documentText(state.fileText, doc);
   const response = await api("PUT", `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`, text);
   const error = response.ok ? null : await errorOf(response);
@@ -588,6 +702,7 @@ async function write(path, isNew) {
   state.path = path;
   state.fileText = text;
   state.savedText = JSON.stringify(doc);
+  state.keepLayout = Boolean(doc.layout);
   setStatus(`saved ${path}`, false);
   showHistoryState();
   return true;
@@ -644,11 +759,67 @@ async function exportImage() {
   return state.lastExport;
 }
 
-// Undo and redo everywhere but in text fields, which have their own.
+// --- copy, paste and duplicate (editor/clipboard.js) ---
+
+let clipboard = null;  // {nodes, places} of the last copy
+
+// The selected nodes as a copy, or null.
+function selection() {
+  const ids = graphView.selectedIds();
+  if (ids.length === 0) return null;
+  graphView.rememberPositions();
+  const places = graphView.positions.get(graphView.scopeKey);
+  return copyNodes(scopeBody(graphView.document(), state.scope), ids, (id) => places.get(id));
+}
+
+function copy() {
+  clipboard = selection() ?? clipboard;
+  if (clipboard) setStatus(`copied ${clipboard.nodes.length} node${clipboard.nodes.length > 1 ? "s" : ""}`, false);
+}
+
+const topLeft = (copied) => [Math.min(...copied.places.map((xy) => xy[0])), Math.min(...copied.places.map((xy) => xy[1]))];
+
+// The copy's nodes, their top left corner at `at` (canvas units), selected.
+function insert(copied, at) {
+  const [left, top] = topLeft(copied);
+  let added = [];
+  restructure((doc) => {
+    added = pasteNodes(doc, state.scope, scopeBody(doc, state.scope), copied, [at[0] - left, at[1] - top]);
+    for (const [id, xy] of added) graphView.positions.get(graphView.scopeKey).set(id, xy);
+    state.keepLayout = true;
+  });
+  graphView.select(added.map(([id]) => id));
+}
+
+// Where the pointer is on the canvas, or past the copied nodes.
+function paste() {
+  if (!clipboard) return;
+  const pointer = graphView.canvas.graph_mouse;
+  insert(clipboard, pointer && Number.isFinite(pointer[0]) ? [...pointer] : topLeft(clipboard).map((v) => v + 40));
+}
+
+// The selected nodes again, a little down and right of them.
+function duplicate() {
+  const copied = selection();
+  if (copied) insert(copied, topLeft(copied).map((v) => v + 40));
+}
+
+// Undo and redo everywhere but in text fields, which have their own; on
+// the canvas, when it has the focus, the node keys (Delete, Backspace and
+// Ctrl+A are litegraph's own).
 function onKey(event) {
   const control = event.ctrlKey || event.metaKey;
-  if (!control || event.target.matches("textarea, input:not([type=range]):not([type=color]):not([type=checkbox]):not([type=button])")) return;
   const key = event.key.toLowerCase();
+  if (event.target === canvas.canvas && !event.altKey) {
+    const action = control ? { c: copy, v: paste, d: duplicate }[key] : !event.shiftKey && { f: () => graphView.fit() }[key];
+    if (action) {
+      action();
+      event.preventDefault();
+      event.stopPropagation();
+      return;
+    }
+  }
+  if (!control || event.target.matches("textarea, input:not([type=range]):not([type=color]):not([type=checkbox]):not([type=button])")) return;
   if (key === "z" && !event.shiftKey) undo();
   else if ((key === "z" && event.shiftKey) || key === "y") redo();
   else if (key === "s") save();
@@ -657,8 +828,24 @@ function onKey(event) {
   event.stopPropagation();
 }
 
+// The palette offers the ops a graph of this kind may use.
+function showPalette() {
+  const palette = byId("palette");
+  for (const option of palette.options) option.hidden = !state.library.get(option.value).kinds?.includes(state.doc.kind);
+  if (palette.selectedOptions[0]?.hidden) palette.value = [...palette.options].find((option) => !option.hidden)?.value ?? "";
+}
+
 async function start() {
   const nodes = await (await api("GET", "/api/nodes")).json();
+  for (const kind of nodes.kinds) state.kinds.set(kind.name, kind);
+  const newGraphKind = byId("new-graph");
+  newGraphKind.append(...nodes.kinds.map((kind) => Object.assign(new Option(kind.name, kind.name), { title: kind.doc })));
+  newGraphKind.addEventListener("change", () => {
+    history.flush();
+    const kind = newGraphKind.value;
+    newGraphKind.value = "";
+    if (!unsaved() || confirm(`Discard the unsaved changes to ${state.path ?? "the new graph"}?`)) newGraph(kind);
+  });
   const palette = byId("palette");
   for (const op of nodes.ops) {
     state.library.set(op.name, op);
@@ -671,7 +858,7 @@ async function start() {
   for (const path of graphs) list.append(new Option(path, path));
   list.addEventListener("change", () => {
     history.flush();
-    if (unsaved() && !confirm(`Discard the unsaved changes to ${state.path}?`)) list.value = state.path;
+    if (unsaved() && !confirm(`Discard the unsaved changes to ${state.path ?? "the new graph"}?`)) list.value = state.path ?? "";
     else open(list.value);
   });
   byId("save").addEventListener("click", save);
@@ -688,6 +875,7 @@ async function start() {
   byId("add-node").addEventListener("click", () => graphView.addNode(palette.value));
   byId("scope").addEventListener("change", (event) => showScope(event.target.value));
   byId("reset-view").addEventListener("click", () => view.reset());
+  byId("frame-all").addEventListener("click", () => graphView.fit());
   byId("frame").addEventListener("input", (event) => setFrame(Number(event.target.value), true));
   byId("frame").addEventListener("change", (event) => setFrame(Number(event.target.value), false));
   byId("play").addEventListener("click", () => setPlaying(!state.playing));
@@ -714,7 +902,7 @@ async function start() {
 // For tests and the console.
 window.shadetreeEditor = {
   state, graph, canvas, graphView, history, view, thumbnails,
-  open, save, saveAs, exportImage, showScope, undo, redo,
+  open, newGraph, save, saveAs, exportImage, showScope, undo, redo,
   addNode: (op) => graphView.addNode(op),
   connect: (...ends) => graphView.connect(...ends),
   documentFromCanvas: () => graphView.document(),

@@ -4,25 +4,8 @@
 // outputs as two boundary nodes. show() builds the canvas from the
 // document; document() reads the document back with the canvas's wires.
 import { LGraph, LGraphCanvas, LGraphNode, LiteGraph } from "/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js";
+import { freshId, parseReference, scopeBody, sourcesOf } from "./graph_document.js";
 import { thumbnailSide } from "./thumbnails.js";
-
-// The node list and outputs of a scope (null: the main graph).
-export function scopeBody(doc, scope) {
-  return scope ? doc.functions[scope] : doc;
-}
-
-// What "$name" refers to in a scope: the params, or the function's inputs.
-export function sourcesOf(doc, scope) {
-  const declared = (scope ? doc.functions[scope].inputs : doc.params) || {};
-  return Object.entries(declared).map(([name, spec]) => ({ name, type: typeof spec === "string" ? spec : spec.type }));
-}
-
-// "id" or "id.output": a wire from a node; "$name": a param or function input.
-export function parseReference(value) {
-  if (typeof value !== "string" || value.startsWith("$")) return null;
-  const dot = value.indexOf(".");
-  return dot < 0 ? { id: value, output: null } : { id: value.slice(0, dot), output: value.slice(dot + 1) };
-}
 
 const nodeWidth = 150;
 const columnGap = 40;
@@ -45,11 +28,33 @@ function labelConstant(slot, value) {
 const titleOf = (id, op) => (id === op ? id : `${id} (${op})`);
 const positionKey = (v) => v.shadetreeId ?? `#${v.boundary}`;
 
+// A graph file's "layout" section (docs/graph-format.md) as the places
+// the canvas keeps, scope -> key -> [x, y]; what is not a place is left out.
+function placesOf(section) {
+  const places = new Map();
+  const isPlace = (xy) => Array.isArray(xy) && xy.length === 2 && xy.every(Number.isFinite);
+  const add = (scope, entries) => {
+    if (entries && typeof entries === "object")
+      places.set(scope, new Map(Object.entries(entries).filter(([, xy]) => isPlace(xy))));
+  };
+  add("", section?.nodes);
+  for (const [name, entries] of Object.entries(section?.functions || {})) add(name, entries);
+  return places;
+}
+
 // A node of the library or of a function of the document, with room under
 // its slots for a thumbnail of its output (in a function's body, as at the
 // function's first call).
 class ShadetreeNode extends LGraphNode {
+  constructor(title) {
+    super(title);
+    this.clonable = false;  // litegraph's Clone drops attributes: Duplicate copies the document's node
+  }
   onConnectionsChange() { this.graph?.view.edited(); }
+  getMenuOptions() { return this.graph?.view.nodeMenu(this) ?? []; }
+  // A deleted node takes its wires along: litegraph would join its first
+  // input to its outputs, changing what other nodes read unasked.
+  connectInputToOutput() {}
   onDrawBackground(ctx) {
     const view = this.graph?.view;
     if (this.flags.collapsed || !this.shadetreeId || !view) return;
@@ -84,6 +89,7 @@ class BoundaryNode extends LGraphNode {
     this.bgcolor = "#22332c";
   }
   onConnectionsChange() { this.graph?.view.edited(); }
+  getMenuOptions() { return []; }
 }
 
 // Litegraph truncates a title to the node's width less a title height at
@@ -91,13 +97,17 @@ class BoundaryNode extends LGraphNode {
 const measure = document.createElement("canvas").getContext("2d");
 
 export class GraphView {
-  // state: the editor's {library, doc, scope, lastError}, read here (and
-  // new nodes added to state.doc); onEdit(): the user changed the scope's
-  // nodes or wires; onMove(): the user dragged nodes to new places;
-  // thumbnailOf(id): the thumbnail entry of a node, or null.
-  constructor(canvasElement, { state, onEdit, onMove, thumbnailOf }) {
+  // state: the editor's {library, kinds, doc, scope, lastError,
+  // unreadError}, read here (and new nodes added to state.doc); onEdit():
+  // the user changed the scope's nodes or wires; onPlace(): the user put
+  // nodes in new places (a drag, a new node); thumbnailOf(id): the
+  // thumbnail entry of a node, or null; nodeMenu(v): the items of node
+  // v's context menu; canvasMenu(): those of the canvas's.
+  constructor(canvasElement, { state, onEdit, onPlace, thumbnailOf, nodeMenu, canvasMenu }) {
     this.state = state;
     this.onEdit = onEdit;
+    this.onPlace = onPlace;
+    this.nodeMenu = nodeMenu;
     this.thumbnailOf = thumbnailOf;
     this.thumbnailsDrawn = 0;
     this.showing = false;  // while show() rebuilds the canvas: no edits
@@ -111,13 +121,28 @@ export class GraphView {
     this.canvas.low_quality_zoom_threshold = 0.4;
     this.canvas.show_info = false;
     this.canvas.render_canvas_border = false;
+    // Menus offer what this document can keep: no groups, colours, pins,
+    // titles or subgraphs, which graph files do not hold.
+    this.canvas.getMenuOptions = canvasMenu;
+    this.graph.onGetNodeMenuOptions = (options) => {
+      const kept = options.filter((item) => !["Align Selected To", "Distribute Nodes"].includes(item?.content));
+      options.splice(0, options.length, ...kept);
+    };
     this.graph.onNodeAdded = (v) => {
       if (this.showing || !v.op || v.shadetreeId) return;
       this.adopt(v);
       this.edited();
+      this.onPlace();
     };
     this.graph.onNodeRemoved = () => this.edited();
-    this.canvas.onNodeMoved = () => onMove();
+    this.canvas.onNodeMoved = () => onPlace();
+    // Keys reach the canvas once it has the focus; a new node goes where
+    // the canvas was last clicked.
+    canvasElement.tabIndex = 0;
+    canvasElement.addEventListener("pointerdown", (event) => {
+      canvasElement.focus();
+      this.clickedAt = this.canvas.convertEventToCanvasOffset(event);
+    });
   }
 
   edited() {
@@ -130,6 +155,8 @@ export class GraphView {
   viewOf(id) { return this.graph._nodes.find((v) => v.shadetreeId === id); }
   docNode(id) { return scopeBody(this.state.doc, this.state.scope).nodes.find((n) => n.id === id); }
   selectedId() { return Object.values(this.canvas.selected_nodes || {}).find((v) => v.shadetreeId)?.shadetreeId ?? null; }
+  selectedIds() { return Object.values(this.canvas.selected_nodes || {}).filter((v) => v.shadetreeId).map((v) => v.shadetreeId); }
+  select(ids) { this.canvas.selectItems(ids.map((id) => this.viewOf(id)).filter(Boolean)); }
 
   // Registered, so that litegraph's own search and copy-paste make nodes
   // of it too; a function's type is registered again when its signature
@@ -144,8 +171,8 @@ export class GraphView {
         // Any wire may be drawn ("*"): the checker judges it (floats
         // promote to vectors, T is inferred), and says what is wrong on
         // the input.
-        for (const input of inputs) this.addInput(input.name, "*", { label: `${input.name}: ${input.type}` });
-        for (const output of outputs) this.addOutput(output.name, "*", { label: `${output.name}: ${output.type}` });
+        for (const input of inputs) this.addInput(input.name, "*", { label: `${input.name}: ${input.type}`, nameLocked: true });
+        for (const output of outputs) this.addOutput(output.name, "*", { label: `${output.name}: ${output.type}`, nameLocked: true });
         this.op = name;
       }
     }
@@ -165,6 +192,15 @@ export class GraphView {
     return this.registerType(op, sourcesOf(this.state.doc, op), outputs, fn.doc || "", "functions");
   }
 
+  // Litegraph's Add Node menu and search list the registered types: the
+  // functions listed are this document's.
+  registerFunctions() {
+    const names = Object.keys(this.state.doc.functions || {});
+    for (const type of Object.keys(LiteGraph.registered_node_types))
+      if (type.startsWith("functions/") && !names.includes(type.slice("functions/".length))) LiteGraph.unregisterNodeType(type);
+    for (const name of names) this.typeForOp(name);
+  }
+
   // Wide enough for the title, tall enough for a thumbnail.
   fitSize(v) {
     measure.font = this.canvas.title_text_font;
@@ -176,22 +212,44 @@ export class GraphView {
   // A node made by the palette, litegraph's search or a paste gets a
   // fresh id, and a place in the document with the attributes its op needs.
   adopt(v) {
-    let n = 1;
-    while (this.docNode(`${v.op}${n}`) || this.viewOf(`${v.op}${n}`)) n += 1;
-    v.shadetreeId = `${v.op}${n}`;
+    v.shadetreeId = freshId(scopeBody(this.state.doc, this.state.scope), v.op, (id) => this.viewOf(id));
     v.title = titleOf(v.shadetreeId, v.op);
     this.fitSize(v);
     scopeBody(this.state.doc, this.state.scope).nodes.push(
       { id: v.shadetreeId, op: v.op, ...structuredClone(newNodeAttributes[v.op] || {}) });
   }
 
+  // A node of op `op`, right of the selected node, or where the canvas was
+  // last clicked, or in the middle of the view; below any node it would
+  // cover. It is selected.
   addNode(op) {
     const type = this.typeForOp(op);
     if (!type) return null;
     const v = LiteGraph.createNode(type);
-    v.pos = this.canvas.ds.convertCanvasToOffset([40, 40]);
+    this.fitSize(v);
+    const selected = this.viewOf(this.selectedId());
+    const [width, height] = this.viewSize();
+    v.pos = selected ? [selected.pos[0] + selected.size[0] + columnGap, selected.pos[1]]
+          : this.clickedAt ? [...this.clickedAt]
+          : this.canvas.ds.convertCanvasToOffset([width / 2 - v.size[0] / 2, height / 3]);
+    this.makeRoom(v);
     this.graph.add(v);
+    this.canvas.selectNode(v);  // the next one goes right of it
     return v;
+  }
+
+  // Moves v down until it covers no other node.
+  makeRoom(v) {
+    const title = LiteGraph.NODE_TITLE_HEIGHT;
+    const covers = (other) => other !== v && v.pos[0] < other.pos[0] + other.size[0] && other.pos[0] < v.pos[0] + v.size[0] &&
+                              v.pos[1] - title < other.pos[1] + other.size[1] && other.pos[1] - title < v.pos[1] + v.size[1];
+    for (let other = this.graph._nodes.find(covers); other; other = this.graph._nodes.find(covers))
+      v.pos[1] = other.pos[1] + other.size[1] + title + rowGap;
+  }
+
+  viewSize() {
+    const ratio = window.devicePixelRatio || 1;
+    return [this.element.width / ratio, this.element.height / ratio];
   }
 
   // Wires output `output` of node `from` into input `input` of node `to`
@@ -217,11 +275,33 @@ export class GraphView {
     for (const [scope, places] of JSON.parse(text)) this.positions.set(scope, new Map(places));
   }
 
+  // The places of a file's "layout" section replace all those kept.
+  loadLayout(section) {
+    this.positions = placesOf(section);
+  }
+
+  // The "layout" section of `doc`: the places of its nodes in each scope
+  // shown or read from its file, in whole units.
+  layoutSection(doc) {
+    this.rememberPositions();
+    const section = (scope) => {
+      const body = scopeBody(doc, scope || null);
+      const ids = new Set([...body.nodes.map((node) => node.id), "#sources", "#outputs"]);
+      const places = [...(this.positions.get(scope) || [])].filter(([key]) => ids.has(key));
+      return Object.fromEntries(places.map(([key, xy]) => [key, xy.map(Math.round)]));
+    };
+    const functions = Object.keys(doc.functions || {}).filter((name) => this.positions.has(name));
+    const layout = { nodes: section("") };
+    if (functions.length > 0) layout.functions = Object.fromEntries(functions.map((name) => [name, section(name)]));
+    return layout;
+  }
+
   // Rebuilds the canvas from state.doc's scope state.scope; nodes keep the
   // places they had when this scope was last shown.
   show({ fit = false } = {}) {
     const { doc, scope } = this.state;
     this.showing = true;
+    this.registerFunctions();
     this.canvas.deselectAll();
     this.graph.clear();
     const body = scopeBody(doc, scope);
@@ -229,7 +309,7 @@ export class GraphView {
     const sources = new BoundaryNode(scope ? "inputs" : "params", "sources");
     for (const source of sourcesOf(doc, scope)) sources.addOutput(source.name, "*", { label: `$${source.name}: ${source.type}` });
     const outputs = new BoundaryNode("outputs", "outputs");
-    for (const name of Object.keys(body.outputs || {})) outputs.addInput(name, "*", { label: name });
+    for (const output of this.outputSlots(body)) outputs.addInput(output.name, "*", { label: output.label, nameLocked: true });
     // Columns by depth: a node one right of its deepest input; the
     // sources in the first column, the outputs in the last.
     const depth = new Map();
@@ -257,21 +337,51 @@ export class GraphView {
     this.wire(views, sources, outputs);
     this.showing = false;
     if (fit) this.fit();
-    this.markError(this.state.lastError);
+    this.markError();
+  }
+
+  // The main graph's outputs node offers every output of its kind's
+  // contract, so one whose wire is cut can be wired again; the outputs
+  // a file has beyond it stay, for the checker to name.
+  outputSlots(body) {
+    const given = Object.keys(body.outputs || {});
+    if (this.state.scope) return given.map((name) => ({ name, label: name }));
+    const contract = this.state.kinds.get(this.state.doc.kind)?.outputs || [];
+    return [...contract.map((output) => ({ name: output.name, label: `${output.name}: ${output.type}${output.required ? " (required)" : ""}` })),
+            ...given.filter((name) => !contract.some((output) => output.name === name)).map((name) => ({ name, label: name }))];
   }
 
   // Columns left to right, each centred on one line as wires mostly run
-  // along it; remembered places win.
+  // along it; remembered places win. A column taller than the view and
+  // than the layout would be with the view's proportions is wrapped into
+  // columns side by side: ocean's longest would not fit at the least zoom.
   layOut(columns) {
     const remembered = this.positions.get(this.scopeKey) || new Map();
-    const heightOf = (column) => column.reduce((sum, v) => sum + v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap, 0);
-    const tallest = Math.max(...columns.map(heightOf));
+    const rowOf = (v) => v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap;
+    const [width, height] = this.viewSize();
+    const area = columns.flat().reduce((sum, v) => sum + (v.size[0] + columnGap) * rowOf(v), 0);
+    const wrapAt = Math.max(height, Math.sqrt(area * height / width));
+    const wrapped = columns.flatMap((column) => {
+      const parts = [[]];
+      let used = 0;
+      for (const v of column) {
+        if (used + rowOf(v) > wrapAt && parts.at(-1).length > 0) {
+          parts.push([]);
+          used = 0;
+        }
+        parts.at(-1).push(v);
+        used += rowOf(v);
+      }
+      return parts;
+    });
+    const heightOf = (column) => column.reduce((sum, v) => sum + rowOf(v), 0);
+    const tallest = Math.max(...wrapped.map(heightOf));
     let x = 30;
-    for (const column of columns) {
+    for (const column of wrapped) {
       let y = 40 + (tallest - heightOf(column)) / 2;
       for (const v of column) {
         v.pos = remembered.get(positionKey(v)) || [x, y];
-        y += v.size[1] + LiteGraph.NODE_TITLE_HEIGHT + rowGap;
+        y += rowOf(v);
         this.graph.add(v);
       }
       x += Math.max(...column.map((v) => v.size[0])) + columnGap;
@@ -311,17 +421,15 @@ export class GraphView {
     wireInto(outputs, body.outputs);
   }
 
-  // Zoom and scroll so that the whole scope is in sight, not magnified,
-  // and not so small that titles cannot be read.
+  // Zoom and scroll so that the whole scope is in sight, not magnified.
   fit() {
     const nodes = this.graph._nodes;
     if (nodes.length === 0) return;
     const title = LiteGraph.NODE_TITLE_HEIGHT;
     const x0 = Math.min(...nodes.map((v) => v.pos[0])), y0 = Math.min(...nodes.map((v) => v.pos[1] - title));
     const x1 = Math.max(...nodes.map((v) => v.pos[0] + v.size[0])), y1 = Math.max(...nodes.map((v) => v.pos[1] + v.size[1]));
-    const ratio = window.devicePixelRatio || 1;
-    const width = this.element.width / ratio, height = this.element.height / ratio;
-    const scale = Math.max(0.5, Math.min(1, (width - 40) / (x1 - x0), (height - 40) / (y1 - y0)));
+    const [width, height] = this.viewSize();
+    const scale = Math.max(this.canvas.ds.min_scale, Math.min(1, (width - 40) / (x1 - x0), (height - 40) / (y1 - y0)));
     this.canvas.ds.scale = scale;
     this.canvas.ds.offset = [Math.max(20 / scale, (width / scale - (x1 - x0)) / 2) - x0,
                              Math.max(20 / scale, (height / scale - (y1 - y0)) / 2) - y0];
@@ -381,7 +489,7 @@ export class GraphView {
     const slot = v?.findInputSlot(input) ?? -1;
     if (slot < 0) return;
     labelConstant(v.inputs[slot], value);
-    this.markError(this.state.lastError);
+    this.markError();
   }
 
   // Whether a wire feeds input `input` of node `id` on the canvas.
@@ -391,13 +499,16 @@ export class GraphView {
     return slot >= 0 && v.inputs[slot].link != null;
   }
 
-  // The checker's diagnostic on the node and input it names.
-  markError(diagnostic) {
+  // The checker's diagnostic on the node and input it names: red when it
+  // stops the preview, amber on a node no output reads, which does not.
+  markError() {
+    const diagnostic = this.state.lastError ?? this.state.unreadError;
+    const [color, bgcolor] = this.state.lastError ? ["#8a2c2c", "#4a1f1f"] : ["#8a6a2c", "#4a3a1f"];
     for (const v of this.graph._nodes) {
       const wrong = Boolean(diagnostic && v.shadetreeId && v.shadetreeId === diagnostic.node);
       if (!v.boundary) {
-        v.color = wrong ? "#8a2c2c" : undefined;
-        v.bgcolor = wrong ? "#4a1f1f" : undefined;
+        v.color = wrong ? color : undefined;
+        v.bgcolor = wrong ? bgcolor : undefined;
       }
       for (const slot of v.inputs || []) {
         const wrongInput = wrong && slot.name === diagnostic.input;

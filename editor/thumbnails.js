@@ -30,7 +30,8 @@ export class Thumbnails {
     return entry && entry.key === key ? entry : null;
   }
 
-  // jobs: [{cacheKey, key, url, body}], in the order to fetch them. An
+  // jobs: [{cacheKey, key, url, body: () => the text to send}], in the
+  // order to fetch them (a body is made only for a thumbnail fetched). An
   // entry is {key, image: a canvas} or {key, image: null, note, why}.
   async refresh(jobs) {
     this.cancel();
@@ -41,7 +42,7 @@ export class Thumbnails {
       this.controller = new AbortController();
       let entry;
       try {
-        const response = await api("POST", job.url, job.body, this.controller.signal);
+        const response = await api("POST", job.url, job.body(), this.controller.signal);
         if (round !== this.round) return;
         // 409: superseded by a newer request of this slot, which will draw.
         if (response.status === 409) return;

@@ -46,6 +46,16 @@ json typed_objects(const std::vector<std::string>& types, const FormatFields& (*
   return {{"type", "array"}, {"items", {{"oneOf", choices}}}, {"maxItems", most}};
 }
 
+// The editor's node places (docs/graph-format.md, "Layout"): kept in the
+// file for people, ignored by the compiler, so only its shape is checked
+// by the schema and nothing of it by the parser.
+json layout_schema() {
+  const json places = {{"type", "object"}, {"additionalProperties", numbers_of(2)}};
+  return {{"type", "object"},
+          {"properties", {{"nodes", places}, {"functions", {{"type", "object"}, {"additionalProperties", places}}}}},
+          {"additionalProperties", false}};
+}
+
 KindSet kinds_needing_a_render_section() {
   KindSet kinds;
   for (const GraphKindDef& def : graph_kind_defs)
@@ -67,6 +77,7 @@ FormatFields build_graph_fields(GraphKind kind) {
       {"nodes", {{"$ref", "#/$defs/nodes"}}, every_kind, every_kind},
       {"outputs", {{"$ref", "#/$defs/outputs"}}, every_kind, every_kind},
       {"render", object_schema(render_fields(kind), kind), every_kind, kinds_needing_a_render_section()},
+      {"layout", layout_schema()},
   };
 }
 

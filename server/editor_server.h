@@ -19,7 +19,8 @@
 // Endpoints (JSON unless said):
 //   GET  /                      the editor (sets the token cookie)
 //   GET  /assets/PATH           the editor's files
-//   GET  /api/nodes             the node library (server/node_library.h)
+//   GET  /api/nodes             the node library and the graph kinds' output contracts
+//                               (server/node_library.h)
 //   GET  /api/graphs            {"graphs": [relative paths of the .json files]}
 //   GET  /api/graph?path=P      the file's text
 //   PUT  /api/graph?path=P[&new=1]

@@ -1,5 +1,7 @@
 #include "server/node_library.h"
 
+#include "graph/format_fields.h"
+#include "nodes/output_contract.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -49,7 +51,23 @@ nlohmann::json node_library_json() {
       if (op.kinds.contains(kind)) json["kinds"].push_back(std::string(graph_kind_name(kind)));
     ops.push_back(std::move(json));
   }
-  return {{"ops", ops}};
+  // What a graph of each kind may output and which fields of a render
+  // section it takes: the editor's New command, kind field and outputs
+  // node offer these.
+  nlohmann::json kinds = nlohmann::json::array();
+  for (const GraphKindDef& def : graph_kind_defs) {
+    nlohmann::json outputs = nlohmann::json::array();
+    for (const OutputSpec& output : output_contract(def.kind))
+      outputs.push_back({{"name", output.name},
+                         {"type", std::string(type_name(output.type))},
+                         {"required", output.required},
+                         {"doc", output.doc}});
+    nlohmann::json render = nlohmann::json::array();
+    for (const FormatField& field : render_fields(def.kind))
+      if (field.kinds.contains(def.kind)) render.push_back(field.name);
+    kinds.push_back({{"name", def.name}, {"doc", def.doc}, {"outputs", outputs}, {"render", render}});
+  }
+  return {{"ops", ops}, {"kinds", kinds}};
 }
 
 }  // namespace shadetree

@@ -192,6 +192,14 @@ TEST_F(EditorServerTest, ListsReadsAndServesTheNodeLibrary) {
       EXPECT_EQ(op["attributes"][0]["name"], "seed");
     }
   EXPECT_TRUE(found);
+  // Each kind's output contract, for new graphs: a volume must give a density.
+  const auto kinds = nlohmann::json::parse(nodes->body)["kinds"];
+  ASSERT_EQ(kinds.size(), static_cast<std::size_t>(graph_kind_count));
+  EXPECT_EQ(kinds[2]["name"], "volume");
+  EXPECT_EQ(kinds[2]["outputs"][0], nlohmann::json::parse(R"json({"name": "density", "type": "float", "required": true,
+                                                                   "doc": "density in [0,1] (Perlin & Hoffert 1989)"})json"));
+  EXPECT_EQ(kinds[2]["outputs"][1]["required"], false);
+  EXPECT_EQ(kinds[0]["render"], nlohmann::json::parse(R"(["size", "domain", "z", "frame"])"));
   EXPECT_EQ(client_->Get("/assets/index.html", headers_)->status, 200);
   EXPECT_EQ(client_->Get("/assets/missing.js", headers_)->status, 404);
   EXPECT_EQ(client_->Get("/api/nothing", headers_)->status, 404);

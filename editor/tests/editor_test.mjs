@@ -426,7 +426,9 @@ try {
   // document: chosen in the list, each is refused, the open graph stays
   // open, and Ctrl+S writes that graph, not over the file chosen.
   await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.previews > 0 && window.shadetreeEditor.state.path === "fireball.json");
+  // Refined to the full size, so that no later preview's status replaces the refusal's.
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "fireball.json" && window.shadetreeEditor.state.drawnSide === 256,
+                             { timeout: 60000 });
   for (const [name, bytes] of [["broken.json", "{\"format\": "], ["not_a_graph.json", notAGraph]]) {
     await page.select("#graph-list", `wrong/${name}`);
     await page.waitForFunction((name) => document.getElementById("status").textContent.includes(`${name} is not a graph file`),
@@ -556,6 +558,166 @@ try {
     assert.ok(worst <= 1.5, `the ${basis} curve drawn is within 1.5/255 of the server's (off by ${worst.toFixed(2)}/255)`);
     console.log(`spline_probe.json, ${basis}: the curve drawn agrees with the server's render at 16 x (within ${worst.toFixed(2)}/255)`);
   }
+  // Duplicate (Ctrl+D, the canvas has the focus since the title was
+  // clicked) keeps the spline's six knots, its basis and its input.
+  await page.mouse.click(curveTitle[0], curveTitle[1]);
+  await pressKeys("Control", "d");
+  const curveNodes = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas().nodes.filter((n) => n.op === "spline"));
+  assert.equal(curveNodes.length, 2, "Ctrl+D added a spline");
+  assert.deepEqual({ ...curveNodes[1], id: "curve" }, curveNodes[0], "the duplicate keeps knots, basis and wire");
+  console.log(`Ctrl+D duplicated curve as ${curveNodes[1].id} with its ${curveNodes[1].knots.length} knots, basis and wire`);
+
+  // Menus offer what the document keeps: no Clone, subgraphs, colours,
+  // pins or titles; Add Node lists this document's functions only.
+  const menus = await page.evaluate(async () => {
+    const { canvas, viewOf } = window.shadetreeEditor;
+    const { LiteGraph } = await import("/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js");
+    return { node: canvas.getNodeMenuOptions(viewOf("curve")).map((item) => item?.content).filter(Boolean),
+             canvas: canvas.getCanvasMenuOptions().map((item) => item?.content).filter(Boolean),
+             functions: Object.keys(LiteGraph.registered_node_types).filter((type) => type.startsWith("functions/")) };
+  });
+  assert.deepEqual(menus.node, ["Duplicate (Ctrl+D)", "Copy (Ctrl+C)", "Remove"]);
+  assert.deepEqual(menus.canvas, ["Add Node", "Paste (Ctrl+V)", "Select all (Ctrl+A)", "Frame all (F)"]);
+  assert.deepEqual(menus.functions, [], "marble's function marble_color is not offered in spline_probe.json");
+  console.log(`menus: a node's ${menus.node.join(", ")}; the canvas's ${menus.canvas.join(", ")}`);
+
+  // A graph from nothing, with the page's controls and keys only.
+  const slotPoint = async (id, input, name) => {
+    await drawn();
+    return page.evaluate((id, input, name) => {
+      const { canvas, viewOf, graphView } = window.shadetreeEditor;
+      const view = id === "#outputs" ? graphView.boundaryView("outputs") : viewOf(id);
+      const slot = input ? view.findInputSlot(name) : view.findOutputSlot(name);
+      const [x, y] = canvas.ds.convertOffsetToCanvas(view.getConnectionPos(input, slot));
+      const box = canvas.canvas.getBoundingClientRect();
+      return [box.left + x, box.top + y];
+    }, id, input, name);
+  };
+  const wire = async (from, output, to, input) => {
+    const [a, b] = [await slotPoint(from, false, output), await slotPoint(to, true, input)];
+    await page.mouse.move(a[0], a[1]);
+    await page.mouse.down();
+    for (let step = 1; step <= 5; ++step) await page.mouse.move(a[0] + (b[0] - a[0]) * step / 5, a[1] + (b[1] - a[1]) * step / 5);
+    await page.mouse.up();
+  };
+  const addWithPalette = async (op) => {
+    await page.select("#palette", op);
+    await page.click("#add-node");
+  };
+  const newDoc = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas());
+  // The duplicate is unsaved: New asks first.
+  const discard = new Promise((resolve) => page.once("dialog", (dialog) => resolve(dialog.accept())));
+  await page.select("#new-graph", "texture");
+  await discard;
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === null && window.shadetreeEditor.state.doc.nodes.length === 0);
+  assert.equal(await page.$eval('select[name="graph kind"]', (field) => field.value), "texture");
+  // The empty graph's check answers, above the fields, before they are clicked.
+  await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes('"outputs" must be a non-empty object'),
+                             { timeout: 5000 });
+  await page.click('input[name="graph name"]', { clickCount: 3 });
+  await page.keyboard.type("from_nothing");
+  await page.type('textarea[name="graph doc"]', "turbulence, made in the editor");
+  // Click an empty spot of the canvas: the first node goes there.
+  const host = await (await page.$("#graph-canvas")).boundingBox();
+  await page.mouse.click(host.x + 60, host.y + 80);
+  await addWithPalette("P");
+  await addWithPalette("turbulence");  // right of P, which is selected
+  const [placeOfP, placeOfTurbulence] = await page.evaluate(() => ["P1", "turbulence1"].map((id) => [...window.shadetreeEditor.viewOf(id).pos]));
+  assert.ok(placeOfTurbulence[0] > placeOfP[0] + 100, `turbulence1 lands right of P1 (${placeOfP}, ${placeOfTurbulence})`);
+  await wire("P1", "out", "turbulence1", "p");
+  await wire("turbulence1", "out", "#outputs", "color");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null && window.shadetreeEditor.state.previews > 0,
+                             { timeout: 10000 });
+  const previewsBeforeUnread = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  // A node nothing reads, with an input missing: a warning on it, while
+  // the preview and the thumbnails go on.
+  await page.mouse.click(host.x + 60, host.y + 400);
+  await addWithPalette("mul");
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadError?.node === "mul1", { timeout: 10000 });
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.lastError), null, "an unread node does not stop the preview");
+  assert.ok(await page.evaluate(() => !document.getElementById("status").classList.contains("error")), "the status is no error");
+  assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeUnread, "the preview stays");
+  // The read nodes' thumbnails are drawn; mul1's says why it has none.
+  await page.waitForFunction(() => ["P1", "turbulence1", "mul1"].every((id) => window.shadetreeEditor.thumbnails.cache.has(`/${id}`)),
+                             { timeout: 10000 });
+  const thumbnailsWithUnread = await page.evaluate(() => Object.fromEntries(["P1", "turbulence1", "mul1"].map((id) => {
+    const entry = window.shadetreeEditor.thumbnails.cache.get(`/${id}`);
+    return [id, entry.image ? "image" : entry.why];
+  })));
+  assert.deepEqual(thumbnailsWithUnread, { P1: "image", turbulence1: "image", mul1: "missing input (it has no default)" });
+  // Delete it with the key.
+  const mulTitle = await titlePoint("mul1");
+  await page.mouse.click(mulTitle[0], mulTitle[1]);
+  await page.keyboard.press("Delete");
+  assert.deepEqual((await newDoc()).nodes.map((n) => n.id), ["P1", "turbulence1"], "Delete removed mul1");
+  console.log("new texture graph: P1 and turbulence1 added and wired into color; an unread mul1 warned and left the preview alone; Delete removed it");
+
+  // Copy and paste with the wires between the copied nodes; a constant
+  // typed in the node panel goes along.
+  const turbulenceTitle = await titlePoint("turbulence1");
+  await page.mouse.click(turbulenceTitle[0], turbulenceTitle[1]);
+  await page.click('input[name="turbulence1.octaves"]', { clickCount: 3 });
+  await page.keyboard.type("3");
+  await page.keyboard.press("Tab");
+  await page.mouse.click(host.x + 20, host.y + host.height - 20);  // the canvas takes the focus
+  await pressKeys("Control", "a");
+  await pressKeys("Control", "c");
+  await page.mouse.move(host.x + 300, host.y + 300);
+  await pressKeys("Control", "v");
+  const pasted = await newDoc();
+  assert.deepEqual(pasted.nodes.slice(2), [{ id: "P2", op: "P" }, { id: "turbulence2", op: "turbulence", in: { p: "P2", octaves: 3 } }]);
+  console.log("Ctrl+A, Ctrl+C, Ctrl+V: P2 and turbulence2 pasted, wired to each other, octaves 3 kept");
+  await pressKeys("Control", "z");
+  assert.deepEqual((await newDoc()).nodes.slice(1), [{ id: "turbulence1", op: "turbulence", in: { p: "P1", octaves: 3 } }],
+                   "undo takes the paste away, not the octaves typed before");
+
+  // Drag P1 somewhere, save (Ctrl+S asks for a name), check the file, open
+  // it again: the places are the ones left.
+  const gripP = await titlePoint("P1");
+  await page.mouse.move(gripP[0], gripP[1]);
+  await page.mouse.down();
+  for (let step = 1; step <= 4; ++step) await page.mouse.move(gripP[0] + step * 5, gripP[1] + step * 20);
+  await page.mouse.up();
+  await settled();
+  const placesBefore = await page.evaluate(() => Object.fromEntries(["P1", "turbulence1"].map((id) => [id, [...window.shadetreeEditor.viewOf(id).pos].map(Math.round)])));
+  await pressKeys("Control", "s");
+  await page.waitForSelector("#save-as-name", { visible: true });
+  await page.click("#save-as-name", { clickCount: 3 });
+  await page.keyboard.type("from_nothing");
+  await page.keyboard.press("Enter");
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "from_nothing.json", { timeout: 5000 });
+  const made = spawnSync(binary, ["check", join(folder, "from_nothing.json")], { encoding: "utf8" });
+  assert.equal(made.status, 0, made.stderr);
+  const madeDoc = JSON.parse(readFileSync(join(folder, "from_nothing.json"), "utf8"));
+  assert.equal(madeDoc.name, "from_nothing");
+  assert.equal(madeDoc.doc, "turbulence, made in the editor");
+  assert.deepEqual(madeDoc.outputs, { color: "turbulence1" });
+  assert.deepEqual({ P1: madeDoc.layout.nodes.P1, turbulence1: madeDoc.layout.nodes.turbulence1 }, placesBefore);
+  await page.evaluate(() => window.shadetreeEditor.open("marble.json"));
+  await page.evaluate(() => window.shadetreeEditor.open("from_nothing.json"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "from_nothing.json" && window.shadetreeEditor.viewOf("P1"));
+  assert.deepEqual(await page.evaluate(() => Object.fromEntries(["P1", "turbulence1"].map((id) => [id, [...window.shadetreeEditor.viewOf(id).pos].map(Math.round)]))),
+                   placesBefore, "the places survive save and reopen");
+  console.log(`saved as from_nothing.json: shadetree check accepts it; P1 at ${placesBefore.P1} and turbulence1 at ${placesBefore.turbulence1} when opened again`);
+
+  // Frame all (F) brings ocean's 127 nodes into the canvas.
+  await page.evaluate(() => window.shadetreeEditor.open("roundtrip/ocean.json"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "roundtrip/ocean.json");
+  await page.mouse.click(host.x + 5, host.y + 5);
+  await page.mouse.wheel({ deltaY: -2000 });
+  await page.keyboard.press("f");
+  const outside = await page.evaluate(() => {
+    const { canvas, graph, graphView } = window.shadetreeEditor;
+    const [width, height] = graphView.viewSize();
+    return graph._nodes.filter((v) => {
+      const [x0, y0] = canvas.ds.convertOffsetToCanvas(v.pos);
+      const [x1, y1] = canvas.ds.convertOffsetToCanvas([v.pos[0] + v.size[0], v.pos[1] + v.size[1]]);
+      return x0 < 0 || y0 < 0 || x1 > width || y1 > height;
+    }).length;
+  });
+  assert.equal(outside, 0, "every node of ocean in sight after F");
+  console.log(`ocean.json: F framed all ${await page.evaluate(() => window.shadetreeEditor.graph._nodes.length)} nodes`);
+
   assert.deepEqual(errors, [], "no script errors");
   console.log(`editor test: ${((performance.now() - testStarted) / 1000).toFixed(1)} s`);
 } catch (error) {
