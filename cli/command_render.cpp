@@ -98,14 +98,12 @@ std::string frame_path(const std::string& pattern, int frame) {
 struct PreparedRender {
   std::unique_ptr<LoadedGraph> loaded;
   std::vector<std::pair<float, std::string>> frames;  // frame number, output path
-  std::unique_ptr<TieredKernel> tiered;
-  std::unique_ptr<Kernel> kernel;  // when not tiered
+  std::unique_ptr<Kernel> kernel;
+  const TieredKernel* tiered = nullptr;  // the kernel, when it is tiered: its report
   std::unique_ptr<Kernel> normal_kernel;
   std::unique_ptr<FrameRenderer> renderer;
   const GraphKindDriver* driver = nullptr;
   double setup_milliseconds = 0;
-
-  const Kernel& chosen() const { return tiered ? *tiered : *kernel; }
 };
 
 Result<std::unique_ptr<Kernel>> backend_kernel(const std::string& backend, const ShadeIR& ir, int width) {
@@ -133,13 +131,10 @@ Result<PreparedRender> prepare(const RenderArguments& arguments) {
   if (!writable) return writable.error();
 
   const auto start = std::chrono::steady_clock::now();
-  if (arguments.backend == "tiered") {
-    prepared.tiered = make_tiered_kernel(graph.ir, arguments.width);
-  } else {
-    Result<std::unique_ptr<Kernel>> kernel = make_kernel(arguments.backend, graph.ir, arguments.width);
-    if (!kernel) return kernel.error();
-    prepared.kernel = std::move(*kernel);
-  }
+  Result<std::unique_ptr<Kernel>> kernel = backend_kernel(arguments.backend, graph.ir, arguments.width);
+  if (!kernel) return kernel.error();
+  prepared.kernel = std::move(*kernel);
+  prepared.tiered = dynamic_cast<const TieredKernel*>(prepared.kernel.get());
   Result<RenderRequest> request = render_request(arguments);
   if (!request) return request.error();
   // --normals exact: a second kernel, the graph with its density's normal.
@@ -184,7 +179,7 @@ Result<Image> render_frame(const RenderArguments& arguments, const PreparedRende
                            FrameReport& report, TileClaims* claims = nullptr) {
   ProgressReporter progress(std::string(prepared.driver->progress_verb) + " " + arguments.file, "tiles",
                             std::string(prepared.driver->progress_unit));
-  return prepared.renderer->render(prepared.chosen(), prepared.loaded->params, prepared.frames[index].first,
+  return prepared.renderer->render(*prepared.kernel, prepared.loaded->params, prepared.frames[index].first,
                                    progress.callback(), &report, claims);
 }
 
