@@ -166,7 +166,7 @@ std::string backend_text(const RenderArguments& arguments, const PreparedRender&
   if (!prepared.tiered) return arguments.backend + ", kernel ready in " + milliseconds_text(prepared.setup_milliseconds);
   const TieredReport tiers = prepared.tiered->report();
   const long runs = tiers.interpreted_runs + tiers.compiled_runs;
-  return tiers.jit_failed ? "tiered: the JIT failed, interpreter throughout"
+  return tiers.jit_failed ? "tiered: the JIT failed (" + tiers.jit_error + "), interpreter throughout"
          : !tiers.jit_ready || tiers.compiled_runs == 0
              ? "tiered: interpreter throughout, the JIT still compiling"
              : "tiered: JIT ready after " + milliseconds_text(tiers.jit_ready_milliseconds) + ", " +

@@ -4,7 +4,7 @@
 
 #include "graph/file_path.h"
 #include "io/exr_file.h"
-#include "io/loadable_module.h"
+#include "platform/loadable_module.h"
 #include "io/output_file.h"
 #include "io/png_file.h"
 

@@ -21,7 +21,7 @@
 #include <utility>
 
 #include "graph/file_path.h"
-#include "io/loadable_module.h"
+#include "platform/loadable_module.h"
 #include "io/mesh_file.h"
 #include "io/mesh_record.h"
 

@@ -6,7 +6,7 @@
 #include <glm/common.hpp>
 
 #include "graph/file_path.h"
-#include "io/loadable_module.h"
+#include "platform/loadable_module.h"
 #include "io/output_file.h"
 
 namespace shadetree {

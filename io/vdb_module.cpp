@@ -1,6 +1,6 @@
 // The OpenVDB side of VDB files, built as a loadable module
 // (libshadetree_vdb.so) so that only `voxelize` and the tests that read
-// VDB files pay for linking OpenVDB (io/loadable_module.h).
+// VDB files pay for linking OpenVDB (platform/loadable_module.h).
 // io/vdb_file.cpp loads it.
 #include <cstdio>
 #include <cstdlib>

@@ -279,14 +279,19 @@ class Jit {
     if (!bind) return missing(bind.takeError());
     auto run = jit_->lookup(name + "_run");
     if (!run) return missing(run.takeError());
-    const CompiledKernel functions{bind->toPtr<KernelBindFunction>(), run->toPtr<KernelRunFunction>(), width, 0,
-                                   CacheHit::none, nullptr};
+    const CompiledKernel functions{
+        .bind = bind->toPtr<KernelBindFunction>(), .run = run->toPtr<KernelRunFunction>(), .width = width};
     return std::shared_ptr<const KernelCode>(std::make_shared<KernelCode>(name, tracker, functions, mutex_));
   }
 
   static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {
     if (!code) return {};
-    return {code->bind, code->run, code->width, milliseconds, cache, code};
+    return {.bind = code->bind,
+            .run = code->run,
+            .width = code->width,
+            .compile_milliseconds = milliseconds,
+            .cache = cache,
+            .code = code};
   }
 
   // The kernel `name` if it is in the JIT, made the most recently used.
@@ -334,7 +339,9 @@ class Jit {
 long resident_kernel_count() { return resident_kernels.load(); }
 
 Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
-  return Jit::instance().compile(ir, width, settings, false);
+  Result<CompiledKernel> compiled = Jit::instance().compile(ir, width, settings, false);
+  if (compiled) compiled->state_size = uniform_state_layout(ir).size;
+  return compiled;
 }
 
 std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& settings) {
@@ -345,6 +352,7 @@ std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& set
 std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const JitSettings& settings) {
   Result<CompiledKernel> found = Jit::instance().compile(ir, width, settings, true);
   if (!found || !found->code) return std::nullopt;
+  found->state_size = uniform_state_layout(ir).size;
   return *found;
 }
 

@@ -32,6 +32,7 @@ struct CompiledKernel {
   KernelBindFunction bind = nullptr;
   KernelRunFunction run = nullptr;
   int width = 0;
+  int state_size = 0;  // floats bind leaves for run (codegen/emit_kernel.h)
   double compile_milliseconds = 0;
   CacheHit cache = CacheHit::none;
   std::shared_ptr<const KernelCode> code;  // keeps bind and run callable

@@ -25,7 +25,7 @@ namespace {
 class JitKernel final : public Kernel {
  public:
   JitKernel(ShadeIR ir, CompiledKernel compiled)
-      : Kernel(ir), ir_(std::move(ir)), compiled_(compiled), state_size_(uniform_state_layout(ir_).size) {}
+      : Kernel(ir), ir_(std::move(ir)), compiled_(compiled) {}
 
   const ShadeIR& ir() const override { return ir_; }
 
@@ -33,7 +33,6 @@ class JitKernel final : public Kernel {
 
   ShadeIR ir_;
   CompiledKernel compiled_;
-  int state_size_;
 };
 
 class JitBinding final : public BoundKernel {
@@ -41,7 +40,7 @@ class JitBinding final : public BoundKernel {
   SHADETREE_CALLS_JIT_CODE JitBinding(const JitKernel& kernel, const float* params, const UniformInputs& uniforms)
       : BoundKernel(kernel.reads(), kernel.outputs()),
         compiled_(kernel.compiled_),
-        state_(static_cast<std::size_t>(std::max(kernel.state_size_, 1))),
+        state_(static_cast<std::size_t>(std::max(kernel.compiled_.state_size, 1))),
         width_(static_cast<std::size_t>(kernel.compiled_.width)),
         output_planes_(static_cast<std::size_t>(kernel.outputs().plane_count)),
         provided_planes_(provided_planes(kernel.outputs())) {

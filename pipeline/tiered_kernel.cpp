@@ -39,6 +39,10 @@ class Tiered final : public TieredKernel {
     TieredReport report;
     report.jit_ready = full_done_;
     report.jit_failed = report.jit_ready && tier_ != Tier::full;
+    if (report.jit_failed) {
+      std::lock_guard lock(mutex_);
+      report.jit_error = jit_error_;
+    }
     report.jit_ready_milliseconds = jit_ready_milliseconds_;
     report.quick_ready_milliseconds = quick_ready_milliseconds_;
     report.interpreted_runs = runs_[0];
@@ -72,7 +76,12 @@ class Tiered final : public TieredKernel {
     }
     Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(std::move(ir), width, settings);
     jit_ready_milliseconds_ = elapsed_milliseconds();
-    if (kernel) publish(std::move(*kernel), Tier::full);
+    if (kernel) {
+      publish(std::move(*kernel), Tier::full);
+    } else {
+      std::lock_guard lock(mutex_);
+      jit_error_ = kernel.error().message;
+    }
     full_done_ = true;
   }
 
@@ -89,6 +98,7 @@ class Tiered final : public TieredKernel {
   std::chrono::steady_clock::time_point start_;
   mutable std::mutex mutex_;
   std::shared_ptr<const Kernel> jit_;
+  std::string jit_error_;
   std::atomic<bool> full_done_{false};
   std::atomic<double> jit_ready_milliseconds_{0}, quick_ready_milliseconds_{0};
   std::thread compiler_;

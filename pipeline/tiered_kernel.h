@@ -12,6 +12,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "ir/kernel.h"
 #include "jit/jit_compiler.h"
@@ -22,6 +23,7 @@ namespace shadetree {
 struct TieredReport {
   bool jit_ready = false;             // the full kernel: compiled, or failed to
   bool jit_failed = false;            // the program ran on the interpreter (or the quick kernel) throughout
+  std::string jit_error;              // and why the JIT failed
   double jit_ready_milliseconds = 0;  // from make_tiered_kernel to the full compile's end
   double quick_ready_milliseconds = 0;  // and to the quick one's (0: none)
   long interpreted_runs = 0, quick_runs = 0, compiled_runs = 0;

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "io/loadable_module.h"
+#include "platform/loadable_module.h"
 
 namespace shadetree {
 

@@ -39,9 +39,9 @@ std::string read_text(const fs::path& path) {
 
 class Cli : public ::testing::Test {
  protected:
-  CommandResult shadetree(const std::string& arguments) const {
+  CommandResult shadetree(const std::string& arguments, const std::string& binary = SHADETREE_BINARY) const {
     const fs::path err = directory_ / "stderr.txt";
-    const std::string command = std::string(SHADETREE_BINARY) + " " + arguments + " 2>" + err.string();
+    const std::string command = binary + " " + arguments + " 2>" + err.string();
     FILE* pipe = ::popen(command.c_str(), "r");
     std::string out;
     char buffer[4096];
@@ -526,6 +526,28 @@ TEST_F(Cli, BackendsRenderTheSameImage) {
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_EQ(a->pixels.size(), b->pixels.size());
   for (std::size_t i = 0; i < a->pixels.size(); ++i) ASSERT_NEAR(a->pixels[i], b->pixels[i], 1e-5f) << i;
+}
+
+// The JIT is a module (jit/jit_module.h): a shadetree without it still
+// checks and interprets, and says why it cannot compile.
+TEST_F(Cli, WithoutTheJitModuleGraphsAreCheckedAndInterpreted) {
+  const fs::path alone = directory_ / "bin" / "shadetree";
+  fs::create_directories(alone.parent_path());
+  fs::copy_file(SHADETREE_BINARY, alone);
+  CommandResult run = shadetree("check " + gallery + "marble.json", alone);
+  EXPECT_EQ(run.status, 0) << run.err;
+  const std::string image = (directory_ / "marble.png").string();
+  run = shadetree("render " + gallery + "marble.json -o " + image + " --size 16x16", alone);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("tiered: the JIT failed (cannot load the JIT (" + (alone.parent_path() /
+                                                                            "libshadetree_jit.so").string()),
+            std::string::npos)
+      << run.err;
+  EXPECT_TRUE(fs::exists(image));
+  run = shadetree("emit " + gallery + "marble.json --asm", alone);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("(--backend interp still works)"), std::string::npos) << run.err;
 }
 
 TEST_F(Cli, EmitShowsTheOptimizedGraphAndVectorCode) {

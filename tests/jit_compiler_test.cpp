@@ -140,7 +140,7 @@ TEST(JitCompiler, SecondCompileHitsTheCacheAndParamsNeedNoRecompile) {
   float red[2][8], green[8], blue[8], alpha[8];
   const float* inputs[varying_plane_count] = {px, px, zero};
   const UniformInputs uniforms;
-  std::vector<float> state(static_cast<std::size_t>(uniform_state_layout(loaded->ir).size) + 1);
+  std::vector<float> state(static_cast<std::size_t>(first->state_size) + 1);
   for (int run = 0; run < 2; ++run) {
     float* outputs[4] = {red[run], green, blue, alpha};
     const std::vector<float>& params = run == 0 ? loaded->params : retuned->params;

@@ -1,4 +1,4 @@
-#include "io/loadable_module.h"
+#include "platform/loadable_module.h"
 
 #include <dlfcn.h>
 
