@@ -14,7 +14,7 @@
 
 #include "interp/dual_kernels.h"
 #include "interp/exec_context.h"
-#include "interp/op_constants.h"
+#include "ir/op_constants.h"
 
 namespace shadetree {
 namespace {
@@ -39,7 +39,7 @@ class InterpretedKernel final : public Kernel {
       if (instr.kind == IrOpKind::end_region) --depth;
       if (instr.kind != IrOpKind::op) continue;
       kernels_[i] = instr.dual ? interp::dual_op_kernel(instr.op) : interp::op_kernel(instr.op);
-      constants_[i] = interp::op_constants(ir_, instr);
+      constants_[i] = op_constants(ir_, instr);
     }
     register_floats_ = offset;
   }

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "interp/op_constants.h"
+#include "ir/op_constants.h"
 
 namespace shadetree {
 
@@ -23,7 +23,7 @@ IntervalProgram::IntervalProgram(ShadeIR ir) : ir_(std::move(ir)), outputs_(outp
     const IrInstr& instr = ir_.code[i];
     if (instr.kind != IrOpKind::op) continue;
     kernels_[i] = interp::interval_kernel(instr.op);
-    constants_[i] = interp::op_constants(ir_, instr);
+    constants_[i] = op_constants(ir_, instr);
   }
 }
 

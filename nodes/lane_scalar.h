@@ -70,4 +70,20 @@ F splat(float value) {
   return F{} + value;
 }
 
+// A loop whose trip count differs per lane, at most `cap` steps: step i
+// runs while condition(i, state...), the mask of the lanes still going
+// (i as a lane of the type of the first state), holds for some lane, as
+// step(mask, state...). Lanes out of the mask must leave the state as it
+// is (through select), so running a step for none of them is harmless.
+// The GLSL tracer (nodes/lane_trace.h) writes it as one rolled loop.
+template <class Condition, class Step, class First, class... Rest>
+void loop_while(int cap, Condition condition, Step step, First& first, Rest&... rest) {
+  for (int i = 0; i < cap; ++i) {
+    const First index = splat<First>(float(i));
+    const auto active = condition(index, first, rest...);
+    if (!any(active)) break;
+    step(active, first, rest...);
+  }
+}
+
 }  // namespace shadetree::lanes

@@ -13,7 +13,7 @@
 
 #include "interp/dual_kernels.h"
 #include "interp/interpreter.h"
-#include "interp/op_constants.h"
+#include "ir/op_constants.h"
 #include "nodes/registry.h"
 #include "support/one_op_graph.h"
 
@@ -210,7 +210,7 @@ TEST(DualKernels, EveryOpsDerivativeAgreesWithCentralDifferences) {
       for (const IrInstr& instr : loaded->ir.code)
         if (instr.kind == IrOpKind::op && instr.op == op.id) found = &instr;
       ASSERT_NE(found, nullptr);
-      const OneOp one{*found, interp::op_constants(loaded->ir, *found)};
+      const OneOp one{*found, op_constants(loaded->ir, *found)};
       ErrorStats stats;
       for (int batch = 0; batch < 8; ++batch) compare(one, random_points(one, random), stats);
       std::printf("%-18s %-6s %10.2e %10.2e %8zu %8d\n", op.name.c_str(), std::string(type_name(instance)).c_str(),

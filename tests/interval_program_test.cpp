@@ -13,7 +13,7 @@
 #include "interp/exec_context.h"
 #include "interp/interpreter.h"
 #include "interp/interval_program.h"
-#include "interp/op_constants.h"
+#include "ir/op_constants.h"
 #include "nodes/registry.h"
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
@@ -80,7 +80,7 @@ void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_co
     if (instr.kind == IrOpKind::op && instr.op == op.id) found = &instr;
   ASSERT_NE(found, nullptr) << op.name;
   const IrInstr& instr = *found;
-  const OpConstants constants = interp::op_constants(ir, instr);
+  const OpConstants constants = op_constants(ir, instr);
   constexpr int lanes = interpreter_block_size;
 
   std::vector<float> planes(max_op_args * 3 * lanes), results(3 * lanes);

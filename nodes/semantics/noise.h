@@ -261,19 +261,21 @@ template <class F, class NoiseAt>
 F turbulence_of(F octaves, F filter_width, NoiseAt noise_at) {
   F sum = splat<F>(0.0f);
   float scale = 1.0f;
-  for (int octave = 0; octave < max_octaves; ++octave, scale *= 0.5f) {
-    auto active = both(splat<F>(float(octave)) < octaves, splat<F>(scale) > filter_width);
-    if (!any(active)) break;
-    F n = noise_at(1.0f / scale);  // a power of two: p * frequency is exact
-    sum = sum + select(active, abs(n) * scale, splat<F>(0.0f));
-  }
+  loop_while(
+      max_octaves,
+      [&](const F& octave, const F&, const auto& scale) { return both(octave < octaves, filter_width < scale); },
+      [&](const auto& active, F& sum, auto& scale) {
+        F n = noise_at(1.0f / scale);  // a power of two: p * frequency is exact
+        sum = sum + select(active, abs(n) * scale, splat<F>(0.0f));
+        scale = scale * 0.5f;
+      },
+      sum, scale);
   return sum;
 }
 
 template <class F>
 F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width) {
-  return turbulence_of(octaves, filter_width,
-                       [&](float f) { return noise(tables, x * f, y * f, z * f); });
+  return turbulence_of(octaves, filter_width, [&](auto f) { return noise(tables, x * f, y * f, z * f); });
 }
 
 // Turbulence repeating every period: octave i is pnoise of 2^i p with
@@ -281,7 +283,7 @@ F turbulence(const NoiseTables& tables, F x, F y, F z, F octaves, F filter_width
 template <class F>
 F pturbulence(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz, F octaves, F filter_width) {
   const F period_x = noise_period(px), period_y = noise_period(py), period_z = noise_period(pz);
-  return turbulence_of(octaves, filter_width, [&](float f) {
+  return turbulence_of(octaves, filter_width, [&](auto f) {
     return noise_on_axes(tables, x * f, y * f, z * f, periodic_axis(x * f, period_x * f),
                          periodic_axis(y * f, period_y * f), periodic_axis(z * f, period_z * f));
   });
@@ -298,14 +300,19 @@ F fbm_of(F octaves, F lacunarity, F gain, F filter_width, NoiseAt noise_at) {
   F frequency = splat<F>(1.0f);
   F amplitude = splat<F>(1.0f);
   auto active = splat<F>(0.0f) < octaves;
-  for (int octave = 0; octave < max_octaves; ++octave) {
-    active = both(active, both(splat<F>(float(octave)) < octaves, frequency * filter_width < 1.0f));
-    if (!any(active)) break;
-    F n = noise_at(frequency);
-    sum = sum + select(active, n * amplitude, splat<F>(0.0f));
-    frequency = frequency * lacunarity;
-    amplitude = amplitude * gain;
-  }
+  loop_while(
+      max_octaves,
+      [&](const F& octave, const F&, const F& frequency, const F&, const auto& active) {
+        return both(active, both(octave < octaves, frequency * filter_width < 1.0f));
+      },
+      [&](const auto& now, F& sum, F& frequency, F& amplitude, auto& active) {
+        active = now;
+        F n = noise_at(frequency);
+        sum = sum + select(active, n * amplitude, splat<F>(0.0f));
+        frequency = frequency * lacunarity;
+        amplitude = amplitude * gain;
+      },
+      sum, frequency, amplitude, active);
   return sum;
 }
 

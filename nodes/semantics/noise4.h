@@ -65,7 +65,7 @@ F pnoise4(const NoiseTables& tables, F x, F y, F z, F w, F px, F py, F pz, F pw)
 template <class F>
 F turbulence4(const NoiseTables& tables, F x, F y, F z, F w, F octaves, F filter_width) {
   return turbulence_of(octaves, filter_width,
-                       [&](float f) { return noise4(tables, x * f, y * f, z * f, w * f); });
+                       [&](auto f) { return noise4(tables, x * f, y * f, z * f, w * f); });
 }
 
 // turbulence4 repeating every period: octave i is pnoise4 of 2^i (p, w)
@@ -76,7 +76,7 @@ F pturbulence4(const NoiseTables& tables, F x, F y, F z, F w, F px, F py, F pz, 
                F filter_width) {
   const F period_x = noise_period(px), period_y = noise_period(py), period_z = noise_period(pz),
           period_w = noise_period(pw);
-  return turbulence_of(octaves, filter_width, [&](float f) {
+  return turbulence_of(octaves, filter_width, [&](auto f) {
     return noise4_on_axes(tables, x * f, y * f, z * f, w * f, periodic_axis(x * f, period_x * f),
                           periodic_axis(y * f, period_y * f), periodic_axis(z * f, period_z * f),
                           periodic_axis(w * f, period_w * f));

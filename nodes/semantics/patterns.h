@@ -21,16 +21,18 @@ F sines(F x, F y, F frequency, F octaves) {
   F series_x = splat<F>(0.0f), series_y = splat<F>(0.0f), total_amplitude = splat<F>(0.0f);
   F omega = frequency;
   float amplitude = 1.0f;
-  for (int term = 0; term < max_octaves; ++term, amplitude *= 0.707f) {
-    auto active = splat<F>(float(term)) < octaves;
-    if (!any(active)) break;
-    F phase_x = sine_of(omega * y * 0.5f) * half_pi;
-    F phase_y = sine_of(omega * x * 0.5f) * half_pi;
-    series_x = series_x + select(active, (sine_of(omega * x + phase_x) + 1.0f) * amplitude, splat<F>(0.0f));
-    series_y = series_y + select(active, (sine_of(omega * y + phase_y) + 1.0f) * amplitude, splat<F>(0.0f));
-    total_amplitude = total_amplitude + select(active, splat<F>(2.0f * amplitude), splat<F>(0.0f));
-    omega = omega * 2.0f;
-  }
+  loop_while(
+      max_octaves, [&](const F& term, const F&, const F&, const F&, const F&, const auto&) { return term < octaves; },
+      [&](const auto& active, F& series_x, F& series_y, F& total_amplitude, F& omega, auto& amplitude) {
+        F phase_x = sine_of(omega * y * 0.5f) * half_pi;
+        F phase_y = sine_of(omega * x * 0.5f) * half_pi;
+        series_x = series_x + select(active, (sine_of(omega * x + phase_x) + 1.0f) * amplitude, splat<F>(0.0f));
+        series_y = series_y + select(active, (sine_of(omega * y + phase_y) + 1.0f) * amplitude, splat<F>(0.0f));
+        total_amplitude = total_amplitude + select(active, splat<F>(2.0f) * amplitude, splat<F>(0.0f));
+        omega = omega * 2.0f;
+        amplitude = amplitude * 0.707f;
+      },
+      series_x, series_y, total_amplitude, omega, amplitude);
   F norm = total_amplitude * total_amplitude;
   return select(norm > 0.0f, series_x * series_y / norm, splat<F>(0.0f));
 }
@@ -65,16 +67,18 @@ template <class F>
 F julia(F zx, F zy, F cx, F cy, F iterations) {
   iterations = min(iterations, splat<F>(float(max_julia_iterations)));
   F survived = splat<F>(0.0f);
-  auto alive = splat<F>(0.0f) < iterations;
-  for (int i = 0; i < max_julia_iterations; ++i) {
-    alive = both(alive, both(splat<F>(float(i)) < iterations, zx * zx + zy * zy <= 4.0f));
-    if (!any(alive)) break;
-    F next_x = zx * zx - zy * zy + cx;
-    F next_y = zx * zy * 2.0f + cy;
-    zx = select(alive, next_x, zx);
-    zy = select(alive, next_y, zy);
-    survived = survived + select(alive, splat<F>(1.0f), splat<F>(0.0f));
-  }
+  // A lane stays out once out: an escaped z is frozen, so |z| stays > 2.
+  loop_while(
+      max_julia_iterations,
+      [&](const F& i, const F& zx, const F& zy, const F&) { return both(i < iterations, zx * zx + zy * zy <= 4.0f); },
+      [&](const auto& alive, F& zx, F& zy, F& survived) {
+        F next_x = zx * zx - zy * zy + cx;
+        F next_y = zx * zy * 2.0f + cy;
+        zx = select(alive, next_x, zx);
+        zy = select(alive, next_y, zy);
+        survived = survived + select(alive, splat<F>(1.0f), splat<F>(0.0f));
+      },
+      zx, zy, survived);
   return select(iterations > 0.0f, survived / iterations, splat<F>(0.0f));
 }
 

@@ -1,8 +1,8 @@
-#include "interp/op_constants.h"
+#include "ir/op_constants.h"
 
 #include "nodes/registry.h"
 
-namespace shadetree::interp {
+namespace shadetree {
 
 OpConstants op_constants(const ShadeIR& ir, const IrInstr& instr) {
   OpConstants constants;
@@ -17,4 +17,4 @@ OpConstants op_constants(const ShadeIR& ir, const IrInstr& instr) {
   return constants;
 }
 
-}  // namespace shadetree::interp
+}  // namespace shadetree
