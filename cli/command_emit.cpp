@@ -1,7 +1,8 @@
-// shadetree emit FILE --graph [--after-each-pass] | --llvm | --asm | --cpp [-o FILE] [--name NAME]:
+// shadetree emit FILE --graph [--after-each-pass] | --llvm | --asm
+//                    | --cpp | --glsl [--shadertoy] [-o FILE] [--name NAME]:
 // what a graph compiles to, after optimization, so that a reader can check
 // the passes and see the vector instructions; or the kernel as standalone
-// C++ to build into another program.
+// C++ to build into another program, or as GLSL for a GPU.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cppgen/emit_cpp.h"
+#include "glslgen/emit_glsl.h"
 #include "graph/generated_names.h"
 #include "pipeline/compile_graph.h"
 #include "io/output_file.h"
@@ -22,7 +24,8 @@ namespace shadetree {
 namespace {
 struct EmitArguments {
   std::string file;
-  bool graph = false, llvm = false, assembly = false, cpp = false, after_each_pass = false;
+  bool graph = false, llvm = false, assembly = false, cpp = false, glsl = false, shadertoy = false,
+       after_each_pass = false;
   std::string output, name;
   int width = 0;
   std::vector<std::string> assignments;
@@ -36,12 +39,21 @@ std::string kernel_name(const EmitArguments& arguments, const Graph& graph) {
   return std::filesystem::path(arguments.file).stem().string();
 }
 
-ExitStatus emit_cpp_file(const EmitArguments& arguments, const LoadedGraph& loaded) {
+Result<std::string> glsl_source(const EmitArguments& arguments, const LoadedGraph& loaded, const std::string& name) {
+  Result<GlslShader> shader = emit_glsl(*loaded.graph, loaded.ir, loaded.params, {name, arguments.shadertoy});
+  if (!shader) return shader.error();
+  return shader->source;
+}
+
+// The C++ or GLSL source of the kernel, to stdout or -o.
+ExitStatus emit_source_file(const EmitArguments& arguments, const LoadedGraph& loaded) {
   if (!arguments.name.empty() && code_identifier(arguments.name) != arguments.name)
     return report(Diagnostic{ExitStatus::invalid_input, arguments.file, {}, {},
                              "--name must be an identifier (ASCII letters, digits and single _ inside, not a keyword "
                              "or an all-capitals name), got " + quoted_text(arguments.name)});
-  Result<std::string> source = emit_cpp(*loaded.graph, loaded.ir, loaded.params, kernel_name(arguments, *loaded.graph));
+  const std::string name = kernel_name(arguments, *loaded.graph);
+  Result<std::string> source = arguments.glsl ? glsl_source(arguments, loaded, name)
+                                              : emit_cpp(*loaded.graph, loaded.ir, loaded.params, name);
   if (!source) return report(source.error());
   if (arguments.output.empty()) {
     std::fwrite(source->data(), 1, source->size(), stdout);
@@ -66,7 +78,7 @@ ExitStatus emit(const EmitArguments& arguments) {
   Result<LoadedGraph> loaded = load_and_compile(arguments.file, arguments.assignments, print_each_pass, graph_files(arguments.search_paths));
   if (!loaded) return report(loaded.error());
   if (arguments.after_each_pass) return ExitStatus::ok;
-  if (arguments.cpp) return emit_cpp_file(arguments, *loaded);
+  if (arguments.cpp || arguments.glsl) return emit_source_file(arguments, *loaded);
   if (arguments.graph) {
     std::printf("; %s: %d instructions before optimization, %zu after\n", printable(arguments.file).c_str(),
                 loaded->instructions_before_optimization, loaded->ir.code.size());
@@ -82,7 +94,7 @@ ExitStatus emit(const EmitArguments& arguments) {
 }  // namespace
 
 void add_emit_command(CLI::App& app, CommandRunner& run) {
-  auto* command = app.add_subcommand("emit", "print the optimized graph, LLVM IR or machine code of a graph, or write its kernel as C++");
+  auto* command = app.add_subcommand("emit", "print the optimized graph, LLVM IR or machine code of a graph, or write its kernel as C++ or GLSL");
   auto arguments = std::make_shared<EmitArguments>();
   command->add_option("file", arguments->file, "graph file")->required();
   auto* graph = command->add_flag("--graph", arguments->graph, "the optimized ShadeIR");
@@ -92,20 +104,26 @@ void add_emit_command(CLI::App& app, CommandRunner& run) {
                     "with --graph: the program after lowering and after each optimizer pass")
       ->needs(graph);
   auto* cpp = command->add_flag("--cpp", arguments->cpp, "the kernel as a standalone C++ header");
-  command->add_option("-o,--output", arguments->output, "with --cpp: the header to write (default: stdout)")->needs(cpp);
+  auto* glsl = command->add_flag("--glsl", arguments->glsl,
+                                 "the kernel as GLSL ES 3.00 (WebGL 2): a fragment shader for texture graphs");
+  command->add_flag("--shadertoy", arguments->shadertoy, "with --glsl: a mainImage to paste into Shadertoy")
+      ->needs(glsl);
+  command->add_option("-o,--output", arguments->output, "with --cpp or --glsl: the file to write (default: stdout)");
   command->add_option("--name", arguments->name,
-                      "with --cpp: prefix of the emitted types and function (default: the graph's name)")
-      ->needs(cpp);
-  graph->excludes(llvm)->excludes(assembly)->excludes(cpp);
-  llvm->excludes(assembly)->excludes(cpp);
-  assembly->excludes(cpp);
+                      "with --cpp or --glsl: name of the emitted function (default: the graph's name)");
+  graph->excludes(llvm)->excludes(assembly)->excludes(cpp)->excludes(glsl);
+  llvm->excludes(assembly)->excludes(cpp)->excludes(glsl);
+  assembly->excludes(cpp)->excludes(glsl);
+  cpp->excludes(glsl);
   command->add_option("--width", arguments->width, "vector width: 4, 8 or 16 (default: the host's widest)")
       ->check(CLI::IsMember({4, 8, 16}));
   command->add_option("--set", arguments->assignments, "set a param: NAME=VALUE (repeatable)");
   add_search_path_option(*command, arguments->search_paths);
   command->callback([&run, arguments] {
-    if (!arguments->graph && !arguments->llvm && !arguments->assembly && !arguments->cpp)
-      throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm, --cpp");
+    if (!arguments->graph && !arguments->llvm && !arguments->assembly && !arguments->cpp && !arguments->glsl)
+      throw CLI::ValidationError("emit", "choose one of --graph, --llvm, --asm, --cpp, --glsl");
+    if ((!arguments->output.empty() || !arguments->name.empty()) && !arguments->cpp && !arguments->glsl)
+      throw CLI::ValidationError("emit", "-o and --name go with --cpp or --glsl");
     run = [arguments] { return emit(*arguments); };
   });
 }

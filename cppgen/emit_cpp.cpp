@@ -297,22 +297,7 @@ class CppEmitter {
     return out.str();
   }
 
-  std::string comment(std::size_t i) const {
-    const IrInstr& instr = ir_.code[i];
-    std::string text = "  // ";
-    switch (instr.kind) {
-      case IrOpKind::op: text += op_def(instr.op).name; break;
-      case IrOpKind::constant: text += "constant"; break;
-      case IrOpKind::param: text += "param"; break;
-      case IrOpKind::global: text += std::string(global_def(static_cast<GlobalId>(instr.immediate[0])).name); break;
-      case IrOpKind::extract: text += "component " + std::to_string(instr.immediate[0]); break;
-      case IrOpKind::partials: text += "gradient"; break;
-      default: break;
-    }
-    if (instr.dual) text += ", with its gradient";
-    if (!instr.source.empty()) text += ", node " + quoted_text(instr.source);
-    return text + "\n";
-  }
+  std::string comment(std::size_t i) const { return "  // " + instruction_comment(ir_.code[i]) + "\n"; }
 
   // One instruction outside the op library: a constant, param, global,
   // component or gradient, into `target`.

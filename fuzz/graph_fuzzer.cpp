@@ -18,6 +18,7 @@
 #include <string>
 
 #include "cppgen/emit_cpp.h"
+#include "glslgen/emit_glsl.h"
 #include "interp/interpreter.h"
 #include "interp/interval_program.h"
 #include "ir/verify.h"
@@ -131,14 +132,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (line.find('\n') != std::string::npos || line.find('\0') != std::string::npos) fault("diagnostic of several lines");
     return 0;
   }
-  Result<std::string> source = std::hash<std::string>{}(text) % 8 == 1
-                                   ? emit_cpp(*loaded->graph, loaded->ir, loaded->params, loaded->graph->name)
-                                   : Result<std::string>(invalid_input("not emitted"));
+  // Emitted source, C++ for one graph in eight and GLSL for another: a
+  // graph's text never continues a line or leaves printable ASCII.
+  const std::size_t emitter = std::hash<std::string>{}(text) % 8;
+  Result<std::string> source = invalid_input("not emitted");
+  if (emitter == 1) {
+    source = emit_cpp(*loaded->graph, loaded->ir, loaded->params, loaded->graph->name);
+    if (source) source = emitted_program(*source);
+  } else if (emitter == 2) {
+    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
+    if (shader) source = shader->source;
+  }
   if (source) {
     char previous = '\n';
-    for (char c : emitted_program(*source)) {
-      if (c == '\n' && previous == '\\') fault("emitted C++ continues a line with a backslash");
-      if (c != '\n' && (c < 0x20 || c > 0x7e)) fault("emitted C++ holds a byte that is not printable ASCII");
+    for (char c : *source) {
+      if (c == '\n' && previous == '\\') fault("emitted source continues a line with a backslash");
+      if (c != '\n' && (c < 0x20 || c > 0x7e)) fault("emitted source holds a byte that is not printable ASCII");
       previous = c;
     }
   }

@@ -4,7 +4,7 @@
 // derivative is stated (nodes/semantics/transcendental_duals.h).
 #include "interp/dual_kernels.h"
 
-#include "interp/op_table.h"
+#include "nodes/ops/op_table.h"
 #include "nodes/dual_frame.h"
 #include "nodes/ops/evaluated.h"
 

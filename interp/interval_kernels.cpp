@@ -4,7 +4,7 @@
 // that states no evaluate_interval does not compile.
 #include "interp/interval_kernels.h"
 
-#include "interp/op_table.h"
+#include "nodes/ops/op_table.h"
 #include "nodes/ops/evaluated.h"
 
 namespace shadetree::interp {

@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "interp/exec_context.h"
-#include "interp/op_table.h"
+#include "nodes/ops/op_table.h"
 #include "nodes/ops/evaluated.h"
 
 namespace shadetree::interp {

@@ -1,10 +1,10 @@
 #include "ir/shade_ir.h"
 
 #include <algorithm>
-
 #include <sstream>
 
 #include "graph/diagnostic.h"
+#include "graph/generated_names.h"
 #include "nodes/registry.h"
 
 namespace shadetree {
@@ -29,6 +29,22 @@ int stored_components(const IrInstr& instr) { return component_count(instr.type)
 Type argument_type(const IrInstr& instr, int a) {
   const PortSpec& port = op_def(instr.op).inputs[static_cast<std::size_t>(a)];
   return port.rule == TypeRule::generic ? instr.generic : port.type;
+}
+
+std::string instruction_comment(const IrInstr& instr) {
+  std::string text;
+  switch (instr.kind) {
+    case IrOpKind::op: text = op_def(instr.op).name; break;
+    case IrOpKind::constant: text = "constant"; break;
+    case IrOpKind::param: text = "param"; break;
+    case IrOpKind::global: text = std::string(global_def(static_cast<GlobalId>(instr.immediate[0])).name); break;
+    case IrOpKind::extract: text = "component " + std::to_string(instr.immediate[0]); break;
+    case IrOpKind::partials: text = "gradient"; break;
+    default: break;
+  }
+  if (instr.dual) text += ", with its gradient";
+  if (!instr.source.empty()) text += ", node " + quoted_text(instr.source);
+  return text;
 }
 
 std::string format_shade_ir(const ShadeIR& ir) {

@@ -85,6 +85,11 @@ void reorder_shade_ir(ShadeIR& ir, const std::vector<std::int32_t>& order);
 // fewer components (a scalar read splatted).
 Type argument_type(const IrInstr& instr, int a);
 
+// What `instr` computes, for a comment in generated source: its op (or
+// constant, param, global, component, gradient), whether with its
+// gradient, and its node, quoted by graph/generated_names.h's quoted_text.
+std::string instruction_comment(const IrInstr& instr);
+
 // Human-readable listing, one instruction a line (shadetree emit --graph).
 std::string format_shade_ir(const ShadeIR& ir);
 

@@ -30,8 +30,10 @@ struct Dual {
   Dual() : value(splat<G>(0.0f)), dx(value), dy(value), dz(value) {}
   // Constants and values that do not depend on P: zero partials.
   Dual(G v) : value(v), dx(splat<G>(0.0f)), dy(dx), dz(dx) {}
-  // Float literals, where G is a vector (C++17: emit --cpp includes this).
-  template <class S, std::enable_if_t<std::is_same_v<S, float> && !std::is_same_v<G, float>, int> = 0>
+  // Float literals, where G is a vector that takes none itself (C++17:
+  // emit --cpp includes this). Where G does (float, the GLSL tracer's
+  // lanes), a literal beside a dual goes to the operators taking a G.
+  template <class S, std::enable_if_t<std::is_same_v<S, float> && !std::is_convertible_v<float, G>, int> = 0>
   Dual(S v) : Dual(splat<G>(v)) {}
   Dual(G v, G x, G y, G z) : value(v), dx(x), dy(y), dz(z) {}
 

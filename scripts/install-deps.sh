@@ -8,7 +8,7 @@ packages=(
   nlohmann-json3-dev libglm-dev libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev libcli11-dev
   libembree-dev libassimp-dev libopenvdb-dev libboost-dev libcpp-httplib-dev libpng-dev libopenexr-dev
-  libopenmpi-dev openmpi-bin
+  libopenmpi-dev openmpi-bin glslang-tools
   nodejs npm chromium python3-jsonschema
   llvm-19-dev clang-19 libclang-rt-19-dev libzstd-dev zlib1g-dev libedit-dev libxml2-dev libffi-dev libcurl4-openssl-dev
 )

@@ -538,12 +538,14 @@ TEST_F(Cli, WithoutTheJitModuleGraphsAreCheckedAndInterpreted) {
   EXPECT_EQ(run.status, 0) << run.err;
   const std::string image = (directory_ / "marble.png").string();
   run = shadetree("render " + gallery + "marble.json -o " + image + " --size 16x16", alone);
-  EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.err.find("tiered: the JIT failed (cannot load the JIT (" + (alone.parent_path() /
-                                                                            "libshadetree_jit.so").string()),
+  EXPECT_EQ(run.status, 0) << run.err;  // tiered: on the interpreter throughout
+  EXPECT_TRUE(fs::exists(image));
+  run = shadetree("render " + gallery + "marble.json -o " + image + ".2.png --size 16x16 --backend jit", alone);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("cannot load the JIT (" + (alone.parent_path() / "libshadetree_jit.so").string()),
             std::string::npos)
       << run.err;
-  EXPECT_TRUE(fs::exists(image));
   run = shadetree("emit " + gallery + "marble.json --asm", alone);
   EXPECT_EQ(run.status, 1);
   EXPECT_EQ(line_count(run.err), 1) << run.err;
@@ -563,6 +565,29 @@ TEST_F(Cli, EmitShowsTheOptimizedGraphAndVectorCode) {
   EXPECT_NE(run.out.find("ymm"), std::string::npos);
   run = shadetree("emit " + gallery + "marble.json");
   EXPECT_EQ(run.status, 2);
+}
+
+TEST_F(Cli, EmitGlslWritesAShaderOrSaysWhyNot) {
+  const std::string shader = (directory_ / "marble.frag").string();
+  CommandResult run = shadetree("emit " + gallery + "marble.json --glsl --name stone -o " + shader);
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string text = read_text(shader);
+  for (const char* part : {"#version 300 es", "uniform int u_octaves;", "void stone(", "void main()"})
+    EXPECT_NE(text.find(part), std::string::npos) << part;
+  run = shadetree("emit " + gallery + "marble.json --glsl --shadertoy");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("void mainImage("), std::string::npos);
+  EXPECT_NE(run.out.find("const int u_octaves = 8;"), std::string::npos);
+  run = shadetree("emit " + gallery + "composite.json --glsl -o " + shader + ".2");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("node \"footage\""), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(shader + ".2"));
+  run = shadetree("emit " + gallery + "marble.json --shadertoy");
+  EXPECT_EQ(run.status, 2);
+  run = shadetree("emit " + gallery + "marble.json --graph -o " + shader);
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
 }
 
 TEST_F(Cli, EmitCppWritesAHeaderOrSaysWhyNot) {

@@ -13,11 +13,12 @@
 namespace {
 
 // Rank of each source folder: a file may include from folders of lower rank.
-// interp/, codegen/ and cppgen/ share a rank, so no backend sees another;
+// interp/, codegen/, cppgen/ and glslgen/ share a rank, so no backend sees
+// another;
 // so do scene/ and schedule/, and server/ and api/. platform/ (what the
 // operating system offers, such as loadable modules) is below everything.
 const std::map<std::string, int> folder_rank = {
-    {"platform", 0}, {"nodes", 0}, {"graph", 1},    {"ir", 2},       {"interp", 3}, {"codegen", 3}, {"cppgen", 3},
+    {"platform", 0}, {"nodes", 0}, {"graph", 1},    {"ir", 2},       {"interp", 3}, {"codegen", 3}, {"cppgen", 3}, {"glslgen", 3},
     {"jit", 4},   {"pipeline", 5}, {"io", 6},       {"schedule", 7}, {"scene", 7},  {"render", 8},
     {"server", 9}, {"api", 9},     {"cli", 10},
 };

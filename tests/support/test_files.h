@@ -11,6 +11,8 @@
 #include <string>
 
 #include "graph/check.h"
+#include "pipeline/compile_graph.h"
+#include "graph_text.h"
 
 namespace shadetree::testing {
 
@@ -46,6 +48,15 @@ inline GraphFiles test_files() {
     return grid;
   };
   return files;
+}
+
+// A texture graph whose node "photo" reads a 1024x1024 RGBA image, in a
+// file "big.json": more data than an emitter writes as source.
+inline Result<LoadedGraph> large_image_graph() {
+  return compile_graph_text(graph_text(R"({"id": "uv", "op": "uv"}, {"id": "photo", "op": "image", "in": {"uv": "uv"},
+                                         "file": "1024x1024x4.png"})",
+                                       R"("color": "photo")"),
+                            "big.json", {}, {}, test_files());
 }
 
 }  // namespace shadetree::testing

@@ -1,7 +1,7 @@
 // A table of one entry per op, generated from the op list in its order
 // (nodes/op_id.h): `input_entry` for the input ops, EntryOf<ops::name>::value
-// for each library op. The interpreter's lane and interval dispatches are
-// such tables.
+// for each library op. The interpreter's lane, interval and dual dispatches
+// and the GLSL tracer's are such tables.
 #pragma once
 
 #include <array>
@@ -9,7 +9,7 @@
 #include "nodes/op_id.h"
 #include "nodes/ops/all.h"
 
-namespace shadetree::interp {
+namespace shadetree {
 
 template <template <class> class EntryOf, class Entry>
 constexpr std::array<Entry, op_count> op_table(Entry input_entry) {
@@ -23,4 +23,4 @@ constexpr std::array<Entry, op_count> op_table(Entry input_entry) {
   }};
 }
 
-}  // namespace shadetree::interp
+}  // namespace shadetree

@@ -1,0 +1,113 @@
+// emit --glsl: every gallery graph gives GLSL that glslangValidator
+// accepts as an ES 3.00 fragment shader (and, for texture graphs, as a
+// Shadertoy mainImage), or is refused in one line naming the node; the
+// uniforms list the params; names a graph supplies are never live code.
+// (tests/glsl_render_test.cpp draws the shaders and compares pixels.)
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "glslgen/emit_glsl.h"
+#include "graph/generated_names.h"
+#include "support/gallery.h"
+#include "support/graph_text.h"
+#include "support/hostile_graph.h"
+#include "support/temp_folder.h"
+#include "support/test_files.h"
+
+namespace shadetree {
+namespace {
+
+// The shell status of glslangValidator on `source` as a fragment shader.
+int validate(const testing::TempFolder& folder, const std::string& name, const std::string& source) {
+  const std::string file = folder.write(name + ".frag", source);
+  const std::string command =
+      std::string(SHADETREE_GLSLANG) + " " + file + " > " + (folder.path() / (name + ".log")).string() + " 2>&1";
+  return std::system(command.c_str());
+}
+
+// What Shadertoy puts around the Image tab's code.
+std::string shadertoy_page(const std::string& image_tab) {
+  return "#version 300 es\nprecision highp float;\nprecision highp int;\nuniform vec3 iResolution;\n"
+         "uniform float iTime;\nout vec4 color;\n" +
+         image_tab + "\nvoid main() { mainImage(color, gl_FragCoord.xy); }\n";
+}
+
+TEST(EmitGlsl, GalleryGraphsValidateOrAreRefusedNamingTheNode) {
+  testing::TempFolder folder("shadetree-emit-glsl");
+  int emitted = 0;
+  for (const std::string& path : testing::gallery_graphs()) {
+    const std::string name = testing::gallery_graph_name(path);
+    Result<LoadedGraph> loaded = testing::load_gallery_graph(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, false});
+    if (!shader) {
+      EXPECT_NE(shader.error().message.find("too many for a GLSL shader"), std::string::npos) << name;
+      EXPECT_FALSE(shader.error().node.empty()) << name;
+      EXPECT_EQ(shader.error().to_string().find('\n'), std::string::npos) << name;
+      continue;
+    }
+    ++emitted;
+    EXPECT_EQ(validate(folder, name, shader->source), 0) << name << ":\n" << shader->source.substr(0, 2000);
+    if (loaded->graph->kind != GraphKind::texture) continue;
+    EXPECT_NE(shader->source.find("void main()"), std::string::npos) << name;
+    Result<GlslShader> shadertoy = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, true});
+    ASSERT_TRUE(shadertoy.ok()) << name;
+    EXPECT_TRUE(shadertoy->uniforms.empty());
+    EXPECT_EQ(shadertoy->source.find("uniform "), std::string::npos) << name;
+    EXPECT_EQ(validate(folder, name + "_shadertoy", shadertoy_page(shadertoy->source)), 0) << name;
+  }
+  EXPECT_GE(emitted, 40);
+}
+
+TEST(EmitGlsl, UniformsAreTheParamsWithTheirTypesAndSlots) {
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/marble.json");
+  ASSERT_TRUE(loaded.ok());
+  Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {"marble", false});
+  ASSERT_TRUE(shader.ok());
+  ASSERT_EQ(shader->uniforms.size(), loaded->ir.params.size());
+  for (std::size_t i = 0; i < shader->uniforms.size(); ++i) {
+    const GlslUniform& uniform = shader->uniforms[i];
+    const IrParam& param = loaded->ir.params[i];
+    EXPECT_EQ(uniform.param, param.name);
+    EXPECT_EQ(uniform.name, "u_" + param.name);
+    EXPECT_EQ(uniform.slot, param.slot);
+    EXPECT_EQ(uniform.type, param.type == Type::int_ ? "int" : "float") << param.name;
+    EXPECT_NE(shader->source.find("uniform " + uniform.type + " " + uniform.name + ";"), std::string::npos);
+  }
+}
+
+TEST(EmitGlsl, RefusesDataTooLargeNamingTheNode) {
+  Result<LoadedGraph> loaded = testing::large_image_graph();
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {"big", false});
+  ASSERT_FALSE(shader.ok());
+  EXPECT_EQ(shader.error().node, "photo");
+  EXPECT_EQ(shader.error().file, "big.json");
+}
+
+TEST(EmitGlsl, HostileNamesAreNeverLiveCode) {
+  testing::TempFolder folder("shadetree-emit-glsl-hostile");
+  Result<LoadedGraph> loaded =
+      compile_graph_text(testing::hostile_graph(), testing::hostile_file_name, {}, {}, {});
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (const std::string& name : testing::hostile_names()) {
+    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, false});
+    ASSERT_TRUE(shader.ok()) << shader.error().to_string();
+    std::istringstream lines(shader->source);
+    int number = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++number;
+      for (char c : line) ASSERT_TRUE(c >= 0x20 && c < 0x7f) << "line " << number << ": " << line;
+      ASSERT_TRUE(line.empty() || line.back() != '\\') << "line " << number << ": " << line;
+      for (const char* live : {"#error", "static_assert(", "#include <no_such"})
+        if (line.find(live) != std::string::npos)
+          EXPECT_LT(line.find("//"), line.find(live)) << "line " << number << " is not a comment: " << line;
+    }
+    EXPECT_EQ(validate(folder, "hostile", shader->source), 0) << quoted_text(name);
+  }
+}
+
+}  // namespace
+}  // namespace shadetree

@@ -1,0 +1,113 @@
+// emit --glsl's fragment shaders drawn by a real WebGL 2 (headless
+// Chromium, SwiftShader where there is no GPU, through the editor's
+// GlslCanvas: editor/tests/render_glsl.mjs) against the interpreter's
+// render of the same graph: every texture graph of the gallery that can
+// be emitted and a graph of hostile names, at 64x64, with the mean and largest difference printed per
+// graph. SwiftShader computes in IEEE single precision and does not fuse
+// multiplies and adds, so the shaders agree with the interpreter to the
+// bit or within an ulp or so; the tolerance here is for that (a GPU's own
+// rounding moves further: docs/glsl.md).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "glslgen/emit_glsl.h"
+#include "interp/interpreter.h"
+#include "render/texture_driver.h"
+#include "support/gallery.h"
+#include "support/hostile_graph.h"
+#include "support/temp_folder.h"
+
+namespace shadetree {
+namespace {
+
+constexpr int size = 64;
+constexpr float largest_difference = 1e-4f;
+constexpr float mean_difference = 1e-6f;
+
+struct Compared {
+  std::string graph;
+  Image reference;
+  std::string raw;  // the GPU's pixels
+};
+
+TEST(GlslRender, TextureGraphsDrawnByWebGlAgreeWithTheInterpreter) {
+  testing::TempFolder folder("shadetree-glsl-render");
+  nlohmann::json jobs = nlohmann::json::array();
+  std::vector<Compared> compared;
+  // The gallery's texture graphs, and one whose many params differ (a
+  // uniform mixed up with another changes its pixels) under hostile names.
+  std::vector<std::pair<std::string, Result<LoadedGraph>>> graphs;
+  for (const std::string& path : testing::gallery_graphs(GraphKind::texture))
+    graphs.emplace_back(testing::gallery_graph_name(path), testing::load_gallery_graph(path));
+  graphs.emplace_back("hostile", compile_graph_text(testing::hostile_graph(), testing::hostile_file_name, {}, {}, {}));
+  for (auto& [name, loaded] : graphs) {
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, false});
+    if (!shader) {  // an image too large for a shader: refused, naming its node
+      EXPECT_NE(shader.error().message.find("too many for a GLSL shader"), std::string::npos) << name;
+      EXPECT_FALSE(shader.error().node.empty()) << name;
+      continue;
+    }
+    TextureView view = TextureView::from_settings(loaded->graph->render);
+    view.width = view.height = size;
+    Result<Image> reference = render_texture(*make_interpreted_kernel(loaded->ir), loaded->params, view, {});
+    ASSERT_TRUE(reference.ok()) << reference.error().to_string();
+    nlohmann::json uniforms = nlohmann::json::array();
+    for (const GlslUniform& uniform : shader->uniforms)
+      uniforms.push_back({{"name", uniform.name},
+                          {"type", uniform.type},
+                          {"values", std::vector<float>(loaded->params.begin() + uniform.slot,
+                                                        loaded->params.begin() + uniform.slot + uniform.components)}});
+    const std::string raw = (folder.path() / (name + ".raw")).string();
+    jobs.push_back({{"shader", folder.write(name + ".frag", shader->source)},
+                    {"width", size},
+                    {"height", size},
+                    {"frame", view.frame},
+                    {"uniforms", uniforms},
+                    {"output", raw}});
+    compared.push_back({name, std::move(*reference), raw});
+  }
+  ASSERT_GE(compared.size(), 8u);
+  const std::string jobs_file = folder.write("jobs.json", jobs.dump());
+  const std::string command = std::string(SHADETREE_NODE) + " " + SHADETREE_SOURCE_DIR +
+                              "/editor/tests/render_glsl.mjs " + jobs_file + " > " +
+                              (folder.path() / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream log(folder.path() / "log.txt");
+  const std::string log_text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  ASSERT_EQ(status, 0) << log_text;
+
+  for (const Compared& graph : compared) {
+    std::ifstream raw(graph.raw, std::ios::binary);
+    std::vector<float> gpu(static_cast<std::size_t>(size) * size * 4);
+    raw.read(reinterpret_cast<char*>(gpu.data()), static_cast<std::streamsize>(gpu.size() * sizeof(float)));
+    ASSERT_TRUE(raw) << graph.graph << ": " << log_text;
+    const int channels = graph.reference.channels;
+    double sum = 0.0, largest = 0.0;
+    long identical = 0;
+    for (int pixel = 0; pixel < size * size; ++pixel)
+      for (int c = 0; c < channels; ++c) {
+        const float cpu = graph.reference.pixels[static_cast<std::size_t>(pixel * channels + c)];
+        const float gpu_value = gpu[static_cast<std::size_t>(pixel * 4 + c)];
+        const double difference = std::fabs(static_cast<double>(cpu) - gpu_value);
+        sum += difference;
+        largest = std::max(largest, std::isnan(difference) ? INFINITY : difference);
+        identical += cpu == gpu_value;
+      }
+    const double mean = sum / (size * size * channels);
+    std::printf("%-20s mean %.3g, largest %.3g, %.1f%% of values identical\n", graph.graph.c_str(), mean, largest,
+                100.0 * identical / (size * size * channels));
+    EXPECT_LE(largest, largest_difference) << graph.graph;
+    EXPECT_LE(mean, mean_difference) << graph.graph;
+  }
+}
+
+}  // namespace
+}  // namespace shadetree
