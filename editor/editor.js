@@ -11,6 +11,7 @@ import { attributeEditor } from "./curve_editor.js";
 import { copyNodes, pasteNodes } from "./clipboard.js";
 import { documentText } from "./document_text.js";
 import { scopeBody, sourcesOf, upstreamOf, withoutUnreadNodes } from "./graph_document.js";
+import { GpuPreview, shaderKey } from "./gpu_preview.js";
 import { GraphView } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
@@ -57,6 +58,7 @@ const state = {
   savedText: null,      // the document as last opened or saved
   fileText: null,       // the file's text as last opened or saved, which a save patches
   lastExport: null,     // {url, name, type, size} of the last exported image
+  checked: null,        // {key, check, whole}: the last document that checked, its params' values aside
 };
 
 const byId = (id) => document.getElementById(id);
@@ -91,6 +93,7 @@ const status = document.getElementById("status");
 const previewCanvas = document.getElementById("preview");
 const view = new PreviewView(previewCanvas, { documentOf: () => state.doc, onChange: (interactive) => scheduleUpdate({ interactive }) });
 const history = new History({ onChange: showHistoryState });
+const gpu = new GpuPreview();
 const thumbnails = new Thumbnails({ onDrawn: () => canvas.setDirty(true, false) });
 const paramsPanel = new ParamsPanel(byId("params"), {
   state,
@@ -388,19 +391,28 @@ async function update() {
   // warning. The page chooses what to send, as it does for the preview's
   // view, so that the server's check stays the command line's (which
   // refuses the file as saved until the node is mended or deleted).
+  // A change of params' values alone (a slider drag) checks as the
+  // document did before it, so the server is not asked again.
   let check, previewed = doc;
-  try {
-    check = await checkOf(JSON.stringify(doc, null, 2));
-    if (!check.ok && check.parsed) {
-      const read = withoutUnreadNodes(doc);
-      const readCheck = await checkOf(JSON.stringify(read, null, 2));
-      // Else the error that stops what the outputs read is the one to mend.
-      [check, previewed] = readCheck.ok ? [{ ok: true, unread: check.error }, read] : [readCheck, doc];
+  const checkKey = `${state.path}\n${shaderKey(doc)}`;
+  if (state.checked?.key === checkKey) {
+    check = state.checked.check;
+    if (!state.checked.whole) previewed = withoutUnreadNodes(doc);
+  } else {
+    try {
+      check = await checkOf(JSON.stringify(doc, null, 2));
+      if (!check.ok && check.parsed) {
+        const read = withoutUnreadNodes(doc);
+        const readCheck = await checkOf(JSON.stringify(read, null, 2));
+        // Else the error that stops what the outputs read is the one to mend.
+        [check, previewed] = readCheck.ok ? [{ ok: true, unread: check.error }, read] : [readCheck, doc];
+      }
+      if (sequence !== state.sequence) return;
+    } catch (error) {
+      if (sequence === state.sequence) setStatus(String(error), true);
+      return;
     }
-    if (sequence !== state.sequence) return;
-  } catch (error) {
-    if (sequence === state.sequence) setStatus(String(error), true);
-    return;
+    state.checked = check.ok ? { key: checkKey, check, whole: previewed === doc } : null;
   }
   state.lastError = check.ok ? null : check.error;
   state.unreadError = check.unread ?? null;
@@ -411,8 +423,18 @@ async function update() {
     setStatus(check.error.text, true);
     return;
   }
+  const previewDoc = view.apply(previewed);
+  const previewBody = JSON.stringify(previewDoc);
+  if (gpu.accepts(previewDoc)) {
+    const drawn = await drawOnGpu(previewDoc);
+    if (sequence !== state.sequence) return;
+    if (drawn) {
+      if (state.playing) nextFrame();
+      else refreshThumbnailsWhenStill(doc, previewBody, previewed === doc);
+      return;
+    }
+  }
   const side = previewSide();
-  const previewBody = JSON.stringify(view.apply(previewed));
   const previewKey = `${side} ${state.frame}\n${previewBody}`;
   // Unless this very picture is shown and no other is on its way.
   const needed = () => inflight || previewKey !== state.drawnKey;
@@ -432,8 +454,47 @@ async function update() {
     const paused = performance.now() - state.lastInteraction;
     refine = setTimeout(() => scheduleUpdate(), Math.max(0, refineDelayMs - paused));
   } else {
-    refreshThumbnails(doc, previewBody, previewed === doc);
+    refreshThumbnailsWhenStill(doc, previewBody, previewed === doc);
   }
+}
+
+// Thumbnails wait for a pause in a drag, which then redraws the preview
+// (from the kernel or the shader it has) and asks for them.
+function refreshThumbnailsWhenStill(doc, previewBody, whole) {
+  const since = performance.now() - state.lastInteraction;
+  if (since < refineDelayMs) refine = setTimeout(() => scheduleUpdate(), refineDelayMs - since);
+  else refreshThumbnails(doc, previewBody, whole);
+}
+
+function showOk() {
+  setStatus(`${state.path || "untitled"}: ok` + (state.unreadError ? ` (no output reads ${state.unreadError.node}, which has an error)` : ""),
+            false);
+}
+
+// Draws the preview on the page's GPU; false where it cannot (the server
+// draws it then) or a newer file was opened meanwhile.
+async function drawOnGpu(doc) {
+  const started = performance.now();
+  const opened = state.opened;
+  let drawn = null;
+  try {
+    drawn = await gpu.draw(doc, previewSize, state.frame, pathQuery());
+  } catch (error) {
+    gpu.error = String(error);
+  }
+  if (!drawn || opened !== state.opened) return false;
+  inflight?.controller.abort();  // a server preview under way would draw over this one
+  const context = previewCanvas.getContext("2d");
+  context.clearRect(0, 0, previewCanvas.width, previewCanvas.height);
+  context.drawImage(drawn, 0, 0, previewCanvas.width, previewCanvas.height);
+  state.drawnKey = null;
+  state.drawnSide = previewSize;
+  state.previews += 1;
+  byId("preview-info").textContent = `${previewSize}x${previewSize} in ${(performance.now() - started).toFixed(1)} ms (GPU: WebGL 2)` +
+    (view.changed ? ", view moved" : "");
+  byId("reset-view").disabled = !view.changed;
+  showOk();
+  return true;
 }
 
 // Draws the preview, unless a newer one was drawn already; false if it
@@ -469,11 +530,11 @@ async function requestPreview(body, side, key) {
     else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / (side * side);
     state.previews += 1;
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
-    byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (kernel: ${response.headers.get("X-Kernel")})` +
+    const gpuRefusal = gpu.enabled && state.doc.kind === "texture" && gpu.error ? `; GPU: ${gpu.error}` : "";
+    byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (CPU, kernel: ${response.headers.get("X-Kernel")}${gpuRefusal})` +
       (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "");
     byId("reset-view").disabled = !view.changed;
-    setStatus(`${state.path || "untitled"}: ok` + (state.unreadError ? ` (no output reads ${state.unreadError.node}, which has an error)` : ""),
-              false);
+    showOk();
     return true;
   } catch (error) {
     if (error.name !== "AbortError" && opened === state.opened) setStatus(String(error), true);
@@ -875,6 +936,12 @@ async function start() {
   byId("add-node").addEventListener("click", () => graphView.addNode(palette.value));
   byId("scope").addEventListener("change", (event) => showScope(event.target.value));
   byId("reset-view").addEventListener("click", () => view.reset());
+  byId("gpu-label").hidden = !gpu.available;
+  byId("gpu").addEventListener("change", (event) => {
+    gpu.enabled = event.target.checked;
+    state.drawnKey = null;
+    scheduleUpdate();
+  });
   byId("frame-all").addEventListener("click", () => graphView.fit());
   byId("frame").addEventListener("input", (event) => setFrame(Number(event.target.value), true));
   byId("frame").addEventListener("change", (event) => setFrame(Number(event.target.value), false));
@@ -901,7 +968,7 @@ async function start() {
 
 // For tests and the console.
 window.shadetreeEditor = {
-  state, graph, canvas, graphView, history, view, thumbnails,
+  state, graph, canvas, graphView, history, view, thumbnails, gpu,
   open, newGraph, save, saveAs, exportImage, showScope, undo, redo,
   addNode: (op) => graphView.addNode(op),
   connect: (...ends) => graphView.connect(...ends),

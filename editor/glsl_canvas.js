@@ -12,7 +12,8 @@ void main() {
 export class GlslCanvas {
   // null where the browser has no WebGL 2.
   static create(canvas) {
-    const gl = canvas.getContext("webgl2", { antialias: false, preserveDrawingBuffer: true });
+    // Colour beside alpha is straight, as the server's previews are.
+    const gl = canvas.getContext("webgl2", { antialias: false, preserveDrawingBuffer: true, premultipliedAlpha: false });
     return gl ? new GlslCanvas(gl) : null;
   }
 

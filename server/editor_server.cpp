@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "glslgen/emit_glsl.h"
 #include "graph/parse.h"
 #include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
@@ -257,6 +258,7 @@ void EditorServer::add_routes() {
   add_node_library_and_stats_routes();
   add_graph_file_routes();
   add_check_route();
+  add_glsl_route();
   add_render_routes();
 }
 
@@ -397,6 +399,31 @@ void EditorServer::add_check_route() {
     Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
     if (!loaded) return refused(true, loaded.error());
     send_json(response, {{"ok", true}});
+  });
+}
+
+void EditorServer::add_glsl_route() {
+  server_->Post("/api/glsl", [this](const httplib::Request& request, httplib::Response& response) {
+    Result<std::filesystem::path> path = graph_path(request, false);
+    if (!path) return send_error(response, 400, path.error().message);
+    Result<Graph> parsed = parse_graph(request.body, path->string());
+    if (!parsed) return send_unprocessable(response, parsed.error());
+    Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
+    if (!loaded) return send_unprocessable(response, loaded.error());
+    // Only a texture graph's shader has a main(): the others' marcher and
+    // ray caster are not written as GLSL yet.
+    if (loaded->graph->kind != GraphKind::texture)
+      return send_unprocessable(response, invalid_input("the page's GPU draws texture graphs only"));
+    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
+    if (!shader) return send_unprocessable(response, shader.error());
+    nlohmann::json uniforms = nlohmann::json::array();
+    for (const GlslUniform& uniform : shader->uniforms)
+      uniforms.push_back({{"param", uniform.param},
+                          {"name", uniform.name},
+                          {"type", uniform.type},
+                          {"slot", uniform.slot},
+                          {"components", uniform.components}});
+    send_json(response, {{"source", shader->source}, {"uniforms", uniforms}});
   });
 }
 

@@ -41,6 +41,11 @@
 //                               slot=S: a newer request of the same slot cancels this one,
 //                               which then answers 409 {"error": "superseded"}. draft=1: a
 //                               volume marches at a coarser step (render/graph_preview.h)
+//   POST /api/glsl?path=P       the body as graph P in GLSL for the page's own GPU
+//                               (glslgen/emit_glsl.h): {"source": the fragment shader,
+//                               "uniforms": [{"param", "name", "type", "slot", "components"}]};
+//                               422 with the diagnostic for a graph that does not check, is not
+//                               a texture graph or holds too much data for a shader
 //   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr
 //                               the body rendered as an image file (up to max_export_side)
 //   GET  /api/stats             {"compiles": kernels compiled since start, "compiling": in the
@@ -111,6 +116,7 @@ class EditorServer {
   void add_node_library_and_stats_routes();
   void add_graph_file_routes();
   void add_check_route();
+  void add_glsl_route();
   void add_render_routes();  // preview and export
 
   bool is_own_host(const std::string& host) const;

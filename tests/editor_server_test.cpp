@@ -134,6 +134,7 @@ TEST_F(EditorServerTest, TheCookieAloneCannotCompileRenderOrWrite) {
       {"POST", "/api/check?path=waves.json"},
       {"POST", "/api/preview?path=waves.json&width=8&height=8"},
       {"POST", "/api/export?path=waves.json&width=8&height=8"},
+      {"POST", "/api/glsl?path=waves.json"},
       {"PUT", "/api/graph?path=forged.json"}};
   const std::string graph =  // a program of its own, compiled by no other test
       std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""), "\"frequency\": 4.25");
@@ -303,6 +304,30 @@ TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
   const Result<LoadedGraph> cli = compile_graph_text(wrong, (root_ / "graphs" / "waves.json").string());
   ASSERT_FALSE(cli.ok());
   EXPECT_EQ(json["error"]["text"], cli.error().to_string()) << "the same text as the command line";
+}
+
+// The page's GPU previews (editor/gpu_preview.js) take the shader and its
+// uniforms from the server, which refuses what it cannot emit in one line.
+TEST_F(EditorServerTest, GlslOfATextureGraphWithItsUniforms) {
+  auto shader = client_->Post("/api/glsl?path=waves.json", headers_, sines_graph, "application/json");
+  ASSERT_EQ(shader->status, 200) << shader->body;
+  const auto json = nlohmann::json::parse(shader->body);
+  EXPECT_NE(json["source"].get<std::string>().find("uniform float u_frequency;"), std::string::npos);
+  ASSERT_EQ(json["uniforms"].size(), 1u);
+  EXPECT_EQ(json["uniforms"][0]["param"], "frequency");
+  EXPECT_EQ(json["uniforms"][0]["name"], "u_frequency");
+  EXPECT_EQ(json["uniforms"][0]["type"], "float");
+  EXPECT_EQ(json["uniforms"][0]["slot"], 0);
+  const std::string volume = std::regex_replace(sines_graph, std::regex("\"kind\": \"texture\""), "\"kind\": \"volume\"");
+  const std::string wrong = std::regex_replace(sines_graph, std::regex("\"frequency\": \"\\$frequency\""),
+                                               "\"frequency\": \"p\"");
+  for (const std::string& refused : {volume, wrong, std::string("{\"format\": ")}) {
+    auto answer = client_->Post("/api/glsl?path=waves.json", headers_, refused, "application/json");
+    EXPECT_EQ(answer->status, 422) << answer->body;
+    EXPECT_EQ(error_of(answer).find('\n'), std::string::npos);
+  }
+  auto stats = nlohmann::json::parse(client_->Get("/api/stats", headers_)->body);
+  EXPECT_EQ(stats["compiles"], 0) << "emitting GLSL compiles no kernel";
 }
 
 // The editor opens only what parses as a graph file (server/editor_server.h).

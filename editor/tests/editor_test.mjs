@@ -19,7 +19,10 @@
 // unsaved edits asks first; every gallery file opened and saved unedited
 // is written back byte for byte, and a changed param default changes one
 // line of its file; constants typed into a node's unwired inputs (a float,
-// a vec3) are previewed, undone, redone and saved as one line. First, the unit tests of the page's modules that need
+// a vec3) are previewed, undone, redone and saved as one line. In a
+// second Chromium with WebGL 2, marble is previewed on the page's GPU, a
+// slider drag redraws it with no request to the server, and the server's
+// preview of it agrees within a level of 255. First, the unit tests of the page's modules that need
 // no browser (editor/tests/*_test.mjs but this one).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
@@ -103,12 +106,12 @@ try {
     }, id);
   };
   // Drags param `name`'s slider with the mouse, 3 pixels a step.
-  const dragSlider = async (name, steps) => {
-    const box = await (await page.$(`input[name="${name}"]`)).boundingBox();
-    await page.mouse.move(box.x + 2, box.y + box.height / 2);
-    await page.mouse.down();
-    for (let step = 1; step <= steps; ++step) await page.mouse.move(box.x + 2 + step * 3, box.y + box.height / 2);
-    await page.mouse.up();
+  const dragSlider = async (name, steps, on = page) => {
+    const box = await (await on.$(`input[name="${name}"]`)).boundingBox();
+    await on.mouse.move(box.x + 2, box.y + box.height / 2);
+    await on.mouse.down();
+    for (let step = 1; step <= steps; ++step) await on.mouse.move(box.x + 2 + step * 3, box.y + box.height / 2);
+    await on.mouse.up();
   };
   const pressKeys = async (...keys) => {
     for (const key of keys) await page.keyboard.down(key);
@@ -717,6 +720,65 @@ try {
   });
   assert.equal(outside, 0, "every node of ocean in sight after F");
   console.log(`ocean.json: F framed all ${await page.evaluate(() => window.shadetreeEditor.graph._nodes.length)} nodes`);
+
+  // Texture previews on the page's own GPU, in a second Chromium with
+  // WebGL 2 (SwiftShader): the one above runs without (--disable-gpu), so
+  // that it tests the server's previews.
+  const gpuBrowser = await puppeteer.launch({
+    executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+    headless: true,
+    args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--disable-quic", "--no-first-run",
+           "--disable-background-networking", "--disable-component-update", "--disable-sync",
+           `--user-data-dir=${join(folder, ".chromium-gpu")}`],
+  });
+  try {
+    const gpuPage = await gpuBrowser.newPage();
+    await gpuPage.setViewport({ width: 1280, height: 760 });
+    gpuPage.on("pageerror", (error) => errors.push(String(error)));
+    // Requests for the preview: thumbnails (node=) stay on the server.
+    const requests = [];
+    gpuPage.on("request", (request) => {
+      const requested = new URL(request.url());
+      if (requested.pathname.startsWith("/api/") && !requested.searchParams.has("node")) requests.push(requested.pathname);
+    });
+    const info = () => gpuPage.$eval("#preview-info", (element) => element.textContent);
+    const pixels = () => gpuPage.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
+    await gpuPage.goto(url);
+    await gpuPage.evaluate(async () => {
+      await window.shadetreeEditor.ready;
+      await window.shadetreeEditor.open("marble.json");
+    });
+    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("GPU"), { timeout: 20000 })
+      .catch(async (error) => { throw new Error(`no GPU preview of marble.json: ${await info()} (${error})`); });
+    await gpuPage.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0 && window.shadetreeEditor.graphView.thumbnailsDrawn > 0,
+                                  { timeout: 20000 });
+    const gpuBefore = await pixels();
+    const drawnBefore = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
+    requests.length = 0;
+    await dragSlider("scale", 25, gpuPage);  // further than the drag above, whose value marble.json was saved with
+    await gpuPage.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, drawnBefore);
+    // The drag's last value drawn, and the thumbnails asked for after the pause.
+    await new Promise((resolve) => setTimeout(resolve, 500));
+    await gpuPage.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
+    const asked = [...requests];
+    const drawnByDrag = (await gpuPage.evaluate(() => window.shadetreeEditor.state.previews)) - drawnBefore;
+    assert.deepEqual(asked, [], "a param drag drawn on the GPU asks the server nothing");
+    const gpuAfter = await pixels();
+    assert.notDeepEqual(gpuAfter, gpuBefore, "the GPU preview changed with the param");
+    assert.match(await info(), /GPU: WebGL 2/);
+    // The same picture from the server's JIT: the GPU box off.
+    await gpuPage.click("#gpu");
+    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("CPU"), { timeout: 20000 });
+    const cpu = await pixels();
+    let largest = 0;
+    for (let i = 0; i < cpu.length; ++i) largest = Math.max(largest, Math.abs(cpu[i] - gpuAfter[i]));
+    assert.ok(largest <= 1, `GPU and CPU previews of marble within one level of 255 (largest difference ${largest})`);
+    console.log(`marble.json on the page's GPU: a slider drag drew ${drawnByDrag} previews with no request to the server; ` +
+                `the server's preview differs by at most ${largest} of 255`);
+  } finally {
+    await Promise.race([gpuBrowser.close(), new Promise((resolve) => setTimeout(resolve, 3000))]);
+    gpuBrowser.process()?.kill("SIGKILL");
+  }
 
   assert.deepEqual(errors, [], "no script errors");
   console.log(`editor test: ${((performance.now() - testStarted) / 1000).toFixed(1)} s`);

@@ -1,0 +1,63 @@
+// Previews of texture graphs drawn by the page's own GPU through WebGL 2:
+// the server writes the graph as GLSL once per structure (POST /api/glsl,
+// glslgen/emit_glsl.h), and a param's new value is a uniform update and a
+// draw, with no request. The server's render (the JIT) stays the
+// fallback, for the other kinds and where the browser has no WebGL 2, and
+// the reference: the "GPU" box switches between them.
+import { api, errorOf } from "./api.js";
+import { GlslCanvas } from "./glsl_canvas.js";
+
+// What a graph's shader depends on: the document but its params' values.
+export function shaderKey(doc) {
+  const params = Object.fromEntries(Object.entries(doc.params || {}).map(([name, { default: _, ...rest }]) => [name, rest]));
+  return JSON.stringify({ ...doc, params });
+}
+
+// A uniform's values, from its param's default as the document holds it.
+function uniformValues(doc, uniform) {
+  const value = doc.params?.[uniform.param]?.default;
+  const values = Array.isArray(value) ? value : [value];
+  return Array.from({ length: uniform.components }, (_, c) => Number(values[Math.min(c, values.length - 1)] ?? 0));
+}
+
+export class GpuPreview {
+  constructor() {
+    this.canvas = GlslCanvas.create(document.createElement("canvas"));
+    this.enabled = this.canvas !== null;
+    this.key = null;        // of the shader compiled
+    this.uniforms = [];
+    this.refusedKey = null; // of a graph the server or the browser could not make a shader of
+    this.error = null;      // and why
+  }
+
+  get available() { return this.canvas !== null; }
+
+  // Whether `doc` (the preview's document) is drawn here.
+  accepts(doc) {
+    return this.enabled && doc.kind === "texture" && shaderKey(doc) !== this.refusedKey;
+  }
+
+  // Draws `doc` at side x side, frame `frame`: the canvas drawn, or null
+  // (this.error says why) for the server to draw instead.
+  async draw(doc, side, frame, pathQuery) {
+    const key = shaderKey(doc);
+    if (key !== this.key) {
+      const refuse = (error) => {
+        this.refusedKey = key;
+        this.error = error;
+        return null;
+      };
+      const response = await api("POST", `/api/glsl?${pathQuery}`, JSON.stringify(doc));
+      if (!response.ok) return refuse(await errorOf(response));
+      const shader = await response.json();
+      const log = this.canvas.compile(shader.source);
+      if (log) return refuse(`WebGL: ${log}`);
+      this.key = key;
+      this.uniforms = shader.uniforms;
+    }
+    this.canvas.setUniforms(this.uniforms.map((uniform) => ({ ...uniform, values: uniformValues(doc, uniform) })));
+    this.canvas.draw(side, side, frame);
+    this.error = null;
+    return this.canvas.gl.canvas;
+  }
+}
