@@ -5,8 +5,8 @@
 // in its URL: one opened without it (by the cookie) can only read.
 const token = new URLSearchParams(location.search).get("token") || "";
 
-export function api(method, url, body, signal) {
-  return fetch(url, { method, body, signal, headers: { "X-Shadetree-Token": token } });
+export function api(method, url, body, signal, headers = {}) {
+  return fetch(url, { method, body, signal, headers: { ...headers, "X-Shadetree-Token": token } });
 }
 
 // The server's one-line JSON error of a refused request, or its status line.

@@ -59,6 +59,7 @@ const state = {
   fileText: null,       // the file's text as last opened or saved, which a save patches
   lastExport: null,     // {url, name, type, size} of the last exported image
   checked: null,        // {key, check, whole}: the last document that checked, its params' values aside
+  fileTag: null,        // the ETag of the file as last opened or saved: a save over a file changed since asks first
 };
 
 const byId = (id) => document.getElementById(id);
@@ -689,6 +690,7 @@ async function open(path) {
   if (!check.ok && !check.parsed) return refuse(check.error.message);
   if (attempt !== opening) return;
   await showDocument(path, doc, text);
+  state.fileTag = response.headers.get("ETag");
 }
 
 // A new graph of `kind`, with no nodes and no file until saved as one.
@@ -709,6 +711,7 @@ async function showDocument(path, doc, text) {
   graphView.loadLayout(doc.layout);
   state.doc = takeLayout(doc);
   state.fileText = text;
+  state.fileTag = null;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;
@@ -753,15 +756,24 @@ async function write(path, isNew) {
   const opened = state.opened;
   const doc = fileDocument();
   const text = documentText(state.fileText, doc);
-  const response = await api("PUT", `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`, text);
-  const error = response.ok ? null : await errorOf(response);
+  const url = `/api/graph?path=${encodeURIComponent(path)}${isNew ? "&new=1" : ""}`;
+  // The file open is written only as it was read or written here: if
+  // another program changed it since, the user says whether to overwrite.
+  const guarded = !isNew && path === state.path && state.fileTag;
+  let response = await api("PUT", url, text, undefined, guarded ? { "If-Match": state.fileTag } : {});
+  let error = response.ok ? null : await errorOf(response);
+  if (response.status === 412 && opened === state.opened && confirm(`${error}. Overwrite it with the graph shown here?`)) {
+    response = await api("PUT", url, text);
+    error = response.ok ? null : await errorOf(response);
+  }
   if (opened !== state.opened) return false;
   if (error) {
-    setStatus(error, true);
+    setStatus(`not saved: ${error}`, true);
     return false;
   }
   state.path = path;
   state.fileText = text;
+  state.fileTag = response.headers.get("ETag");
   state.savedText = JSON.stringify(doc);
   state.keepLayout = Boolean(doc.layout);
   setStatus(`saved ${path}`, false);

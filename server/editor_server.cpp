@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -138,6 +140,14 @@ std::string rgba_bytes(const Image& image) {
       bytes[4 * i + c] = static_cast<char>(static_cast<unsigned char>(clamped * 255.0f + 0.5f));
     }
   return bytes;
+}
+
+// A graph file's HTTP entity tag: a digest of its text, enough to tell
+// that another program changed the file (not a defence against anyone).
+std::string entity_tag(const std::string& text) {
+  char tag[32];
+  std::snprintf(tag, sizeof tag, "\"%016zx\"", std::hash<std::string>{}(text));
+  return tag;
 }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
@@ -356,6 +366,7 @@ void EditorServer::add_graph_file_routes() {
     bool ok = false;
     const std::string text = read_file(*path, &ok);
     if (!ok || !std::filesystem::is_regular_file(*path)) return send_error(response, 404, "no such graph file");
+    response.set_header("ETag", entity_tag(text));
     response.set_content(text, "application/json");
   });
   http.Put("/api/graph", [this](const httplib::Request& request, httplib::Response& response) {
@@ -364,6 +375,16 @@ void EditorServer::add_graph_file_routes() {
     if (request.get_param_value("new") == "1" && std::filesystem::exists(*path))
       return send_error(response, 409, request.get_param_value("path") + " exists already");
     if (!nlohmann::json::accept(request.body)) return send_error(response, 400, "the body is not JSON");
+    // If-Match: the file as the page last read or wrote it. A file another
+    // program changed (or removed) since is not written over unasked.
+    if (request.has_header("If-Match")) {
+      bool ok = false;
+      const std::string text = read_file(*path, &ok);
+      if (!ok || entity_tag(text) != request.get_header_value("If-Match"))
+        return send_error(response, 412,
+                          request.get_param_value("path") + (ok ? " changed on disk" : " was removed") +
+                              " since it was opened here");
+    }
     Status written = write_then_rename(path->string(), [&](const std::string& temporary) -> std::string {
       std::ofstream file(temporary, std::ios::binary);
       file << request.body;
@@ -371,6 +392,7 @@ void EditorServer::add_graph_file_routes() {
       return file ? "" : "cannot write " + temporary;
     });
     if (!written) return send_error(response, 500, written.error().message);
+    response.set_header("ETag", entity_tag(request.body));
     send_json(response, {{"saved", request.get_param_value("path")}});
   });
 }

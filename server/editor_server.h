@@ -22,10 +22,11 @@
 //   GET  /api/nodes             the node library and the graph kinds' output contracts
 //                               (server/node_library.h)
 //   GET  /api/graphs            {"graphs": [relative paths of the .json files]}
-//   GET  /api/graph?path=P      the file's text
+//   GET  /api/graph?path=P      the file's text, with its ETag
 //   PUT  /api/graph?path=P[&new=1]
 //                               saves the body (JSON text) to P, through a temporary file;
-//                               with new=1 (save as), 409 if P exists
+//                               with new=1 (save as), 409 if P exists; with If-Match, 412 if P
+//                               is not that ETag's text any more; the new text's ETag
 //   POST /api/check?path=P      checks the body as graph P: {"ok": true} or {"ok": false, "parsed": B,
 //                               "error": {...}}; parsed is false when the body is not a graph file at
 //                               all (its JSON, fields and their types: graph/parse.h), true when it is

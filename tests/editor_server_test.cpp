@@ -263,6 +263,37 @@ TEST_F(EditorServerTest, SavesThroughATemporaryFileWhatCheckAccepts) {
 
 // Issue 21: concurrent saves of one file shared a temporary name, and 6 of
 // 100 failed with 500.
+// The editor saves with If-Match: a file changed or removed on disk since
+// the page read it is not written over unasked (issue 26).
+TEST_F(EditorServerTest, ASaveDoesNotOverwriteAFileChangedOnDisk) {
+  const fs::path file = root_ / "graphs" / "waves.json";
+  auto read = client_->Get("/api/graph?path=waves.json", headers_);
+  ASSERT_EQ(read->status, 200);
+  const std::string tag = read->get_header_value("ETag");
+  ASSERT_FALSE(tag.empty());
+  httplib::Headers matching = headers_;
+  matching.emplace("If-Match", tag);
+  auto saved = client_->Put("/api/graph?path=waves.json", matching, sines_graph, "application/json");
+  ASSERT_EQ(saved->status, 200) << saved->body;
+  const std::string saved_tag = saved->get_header_value("ETag");
+  EXPECT_EQ(saved_tag, client_->Get("/api/graph?path=waves.json", headers_)->get_header_value("ETag"));
+  std::ofstream(file) << "{\"edited\": \"elsewhere\"}";
+  httplib::Headers stale = headers_;
+  stale.emplace("If-Match", saved_tag);
+  auto refused = client_->Put("/api/graph?path=waves.json", stale, sines_graph, "application/json");
+  EXPECT_EQ(refused->status, 412);
+  EXPECT_NE(error_of(refused).find("changed on disk"), std::string::npos) << refused->body;
+  std::ifstream kept(file);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(kept)), std::istreambuf_iterator<char>()),
+            "{\"edited\": \"elsewhere\"}");
+  fs::remove(file);
+  refused = client_->Put("/api/graph?path=waves.json", stale, sines_graph, "application/json");
+  EXPECT_EQ(refused->status, 412);
+  EXPECT_NE(error_of(refused).find("was removed"), std::string::npos) << refused->body;
+  EXPECT_EQ(client_->Put("/api/graph?path=waves.json", headers_, sines_graph, "application/json")->status, 200)
+      << "without If-Match, as the page does once the user says to overwrite";
+}
+
 TEST_F(EditorServerTest, ConcurrentSavesOfOneFileAllSucceed) {
   const int clients = 8, saves_per_client = 13;
   std::vector<std::future<std::vector<int>>> statuses;

@@ -15,7 +15,9 @@
 // refined to the full size, and its slider drag draws drafts, refined on
 // a pause; a graph opened during a preview never shows the earlier
 // graph's picture; a malformed file and one that is JSON but no graph are
-// refused on open and Ctrl+S cannot write over them; leaving the page with
+// refused on open and Ctrl+S cannot write over them; a file changed on
+// disk since it was opened is written over only when the user says so;
+// leaving the page with
 // unsaved edits asks first; every gallery file opened and saved unedited
 // is written back byte for byte, and a changed param default changes one
 // line of its file; constants typed into a node's unwired inputs (a float,
@@ -26,7 +28,7 @@
 // no browser (editor/tests/*_test.mjs but this one).
 //   node editor/tests/editor_test.mjs SHADETREE_BINARY SOURCE_DIR [SCREENSHOT.png]
 import { spawn, spawnSync } from "node:child_process";
-import { copyFileSync, cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, cpSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import assert from "node:assert/strict";
@@ -117,16 +119,22 @@ try {
     for (const key of keys) await page.keyboard.down(key);
     for (const key of keys.reverse()) await page.keyboard.up(key);
   };
-  // Ctrl+S, and the text of the file it saves, which is removed first so
-  // that the one read is the one saved (saves write a temporary file and
-  // rename it).
+  // Every status the page shows from now on (a preview's "ok" may replace
+  // another at once), in window.statusesShown.
+  const watchStatus = () => page.evaluate(() => {
+    window.statusesShown = [];
+    if (window.statusWatched) return;
+    window.statusWatched = true;
+    const status = document.getElementById("status");
+    new MutationObserver(() => window.statusesShown.push(status.textContent))
+      .observe(status, { childList: true, characterData: true, subtree: true });
+  });
+  // Ctrl+S, and the text of the file it saves, read once the page says it
+  // saved it (saves write a temporary file and rename it).
   const saveWithKeys = async (path) => {
-    rmSync(join(folder, path));
+    await watchStatus();
     await pressKeys("Control", "s");
-    for (let wait = 0; !existsSync(join(folder, path)); ++wait) {
-      assert.ok(wait < 500, `${path} saved within 5 s`);
-      await new Promise((resolve) => setTimeout(resolve, 10));
-    }
+    await page.waitForFunction((path) => window.statusesShown.includes(`saved ${path}`), { timeout: 5000 }, path);
     return readFileSync(join(folder, path), "utf8");
   };
   const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
@@ -456,6 +464,29 @@ try {
   assert.equal(fireball.status, 0, fireball.stderr);
   console.log("Ctrl+S after the refusals saved fireball.json, which checks; unsaved edits guard the page");
 
+  // fireball.json changed by another program: Ctrl+S asks before writing
+  // over it; no keeps the other program's text, yes writes the graph.
+  const elsewhere = readFileSync(join(folder, "fireball.json"), "utf8").replace('"name"', '"doc": "edited elsewhere", "name"');
+  writeFileSync(join(folder, "fireball.json"), elsewhere);
+  await dragSlider("scale", 3);
+  await settled();
+  const answer = (accept) => new Promise((resolve) => page.once("dialog", async (dialog) => {
+    const message = dialog.message();
+    await (accept ? dialog.accept() : dialog.dismiss());
+    resolve(message);
+  }));
+  await watchStatus();
+  let asked = answer(false);
+  await pressKeys("Control", "s");
+  assert.match(await asked, /fireball\.json changed on disk since it was opened here/);
+  await page.waitForFunction(() => window.statusesShown.some((text) => text.startsWith("not saved")), { timeout: 5000 });
+  assert.equal(readFileSync(join(folder, "fireball.json"), "utf8"), elsewhere, "declined: the other program's text stays");
+  asked = answer(true);
+  const overwritten = await saveWithKeys("fireball.json");
+  await asked;
+  assert.ok(!overwritten.includes("edited elsewhere"), "confirmed: the graph shown is written");
+  console.log("fireball.json changed on disk: Ctrl+S asked; declined, the file stayed; confirmed, the graph was written");
+
   // Every gallery file, chosen in the list and saved with Ctrl+S unedited,
   // is written back byte for byte.
   const roundTripStarted = performance.now();
@@ -638,7 +669,9 @@ try {
   await addWithPalette("mul");
   await page.waitForFunction(() => window.shadetreeEditor.state.unreadError?.node === "mul1", { timeout: 10000 });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.state.lastError), null, "an unread node does not stop the preview");
-  assert.ok(await page.evaluate(() => !document.getElementById("status").classList.contains("error")), "the status is no error");
+  // The status follows the preview of what the outputs read.
+  await page.waitForFunction(() => !document.getElementById("status").classList.contains("error"), { timeout: 10000 })
+    .catch(async () => assert.fail(`the status is no error (${await page.$eval("#status", (element) => element.textContent)})`));
   assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeUnread, "the preview stays");
   // The read nodes' thumbnails are drawn; mul1's says why it has none.
   await page.waitForFunction(() => ["P1", "turbulence1", "mul1"].every((id) => window.shadetreeEditor.thumbnails.cache.has(`/${id}`)),
