@@ -6,11 +6,13 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "glslgen/traced_ops.h"
 #include "graph/generated_names.h"
 #include "ir/op_constants.h"
 #include "nodes/globals.h"
+#include "nodes/improved_noise_permutation.h"
 #include "nodes/noise_tables.h"
 #include "nodes/output_contract.h"
 #include "nodes/registry.h"
@@ -67,7 +69,13 @@ class GlslEmitter {
     if (ir_.data.size() > max_glsl_data) return refusal(largest_data(), data_refusal());
     register_tables();
     lanes::TraceActivation activation(trace_);
-    if (Status traced = trace_program(); !traced) return traced.error();
+    // A lookup in memory no array was registered for is a bug of this
+    // emitter, refused in one line rather than a crash.
+    try {
+      if (Status traced = trace_program(); !traced) return traced.error();
+    } catch (const std::logic_error& error) {
+      return failure(std::string("cannot write the program as GLSL: ") + error.what());
+    }
     std::ostringstream out;
     out << header() << uniforms() << tables() << function();
     if (ir_.kind == GraphKind::texture) out << (options_.shadertoy ? shadertoy_main() : texture_main());
@@ -118,6 +126,8 @@ class GlslEmitter {
       trace_.add_table(tables.hashed_gradient_z.data(), noise_table_size, "st_hashed_gradient_z" + suffix);
     }
     if (!ir_.data.empty()) trace_.add_table(ir_.data.data(), ir_.data.size(), "st_data");
+    // The op library's own tables.
+    trace_.add_table(improved_noise_permutation.data(), improved_noise_permutation.size(), "st_improved_permutation");
   }
 
   int components(std::int32_t value) const { return component_count(ir_.code[value].type); }
@@ -343,6 +353,11 @@ class GlslEmitter {
       declare("st_hashed_gradient_x", "float", joined(tables.hashed_gradient_x, lanes::glsl_float));
       declare("st_hashed_gradient_y", "float", joined(tables.hashed_gradient_y, lanes::glsl_float));
       declare("st_hashed_gradient_z", "float", joined(tables.hashed_gradient_z, lanes::glsl_float));
+    }
+    if (trace_.used("st_improved_permutation")) {
+      const std::size_t size = improved_noise_permutation.size();
+      out << "\n// Perlin 2002's reference permutation, twice over.\nconst int st_improved_permutation[" << size
+          << "] = int[" << size << "](\n    " << joined(improved_noise_permutation, ints) << ");\n";
     }
     if (trace_.used("st_data"))
       out << "\n// The ops' data: spline knots, tables, images.\nconst float st_data[" << ir_.data.size()

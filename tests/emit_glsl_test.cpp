@@ -1,7 +1,8 @@
 // emit --glsl: every gallery graph gives GLSL that glslangValidator
 // accepts as an ES 3.00 fragment shader (and, for texture graphs, as a
-// Shadertoy mainImage), or is refused in one line naming the node; the
-// uniforms list the params; names a graph supplies are never live code.
+// Shadertoy mainImage), or is refused in one line naming the node; so
+// does every op alone; the uniforms list the params; names a graph
+// supplies are never live code.
 // (tests/glsl_render_test.cpp draws the shaders and compares pixels.)
 #include <gtest/gtest.h>
 
@@ -9,10 +10,12 @@
 #include <sstream>
 
 #include "glslgen/emit_glsl.h"
+#include "glslgen/traced_ops.h"
 #include "graph/generated_names.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
 #include "support/hostile_graph.h"
+#include "support/one_op_graph.h"
 #include "support/temp_folder.h"
 #include "support/test_files.h"
 
@@ -59,6 +62,26 @@ TEST(EmitGlsl, GalleryGraphsValidateOrAreRefusedNamingTheNode) {
     EXPECT_EQ(validate(folder, name + "_shadertoy", shadertoy_page(shadertoy->source)), 0) << name;
   }
   EXPECT_GE(emitted, 40);
+}
+
+// Every op of the library, over each type it takes, traces into GLSL that
+// glslangValidator accepts: an op added to nodes/ needs nothing more.
+TEST(EmitGlsl, EveryOpTracesIntoValidGlsl) {
+  testing::TempFolder folder("shadetree-emit-glsl-ops");
+  int shaders = 0;
+  for (const OpDef& op : all_ops()) {
+    if (!traced_op(op.id)) continue;  // the inputs and split, lowered to other instructions
+    for (Type instance : testing::op_instances(op)) {
+      const std::string name = op.name + "_" + std::string(type_name(instance));
+      Result<LoadedGraph> loaded = testing::one_op_graph(op, instance);
+      ASSERT_TRUE(loaded.ok()) << name << ": " << loaded.error().to_string();
+      Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, false});
+      ASSERT_TRUE(shader.ok()) << name << ": " << shader.error().to_string();
+      EXPECT_EQ(validate(folder, name, shader->source), 0) << name << ":\n" << shader->source.substr(0, 3000);
+      ++shaders;
+    }
+  }
+  EXPECT_GT(shaders, 80);
 }
 
 TEST(EmitGlsl, UniformsAreTheParamsWithTheirTypesAndSlots) {
