@@ -21,7 +21,9 @@
 // unsaved edits asks first; every gallery file opened and saved unedited
 // is written back byte for byte, and a changed param default changes one
 // line of its file; constants typed into a node's unwired inputs (a float,
-// a vec3) are previewed, undone, redone and saved as one line. In a
+// a vec3) are previewed, undone, redone and saved as one line; the kind
+// field changes a new graph's kind and back; a Ctrl+drag box selects the
+// nodes in it. In a
 // second Chromium with WebGL 2, marble is previewed on the page's GPU, a
 // slider drag redraws it with no request to the server, and the server's
 // preview of it agrees within a level of 255. First, the unit tests of the page's modules that need
@@ -687,6 +689,30 @@ try {
   await page.keyboard.press("Delete");
   assert.deepEqual((await newDoc()).nodes.map((n) => n.id), ["P1", "turbulence1"], "Delete removed mul1");
   console.log("new texture graph: P1 and turbulence1 added and wired into color; an unread mul1 warned and left the preview alone; Delete removed it");
+
+  // The kind field: a volume gets bounds (and the checker asks for its
+  // density), and back to a texture they go again.
+  await page.mouse.click(host.x + 20, host.y + host.height - 20);  // no node selected: the graph's fields
+  await page.select('select[name="graph kind"]', "volume");
+  await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes("density"), { timeout: 5000 });
+  assert.deepEqual((await newDoc()).render?.volume?.bounds, { min: [-1, -1, -1], max: [1, 1, 1] }, "a volume gets bounds");
+  await page.select('select[name="graph kind"]', "texture");
+  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null, { timeout: 5000 });
+  assert.equal((await newDoc()).render, undefined, "a texture keeps no volume");
+  // Ctrl+drag draws a box: the nodes in it are selected.
+  const [pTitle, turbulenceTitleBefore] = [await titlePoint("P1"), await titlePoint("turbulence1")];
+  const boxFrom = [Math.min(pTitle[0], turbulenceTitleBefore[0]) - 40, Math.min(pTitle[1], turbulenceTitleBefore[1]) - 40];
+  const boxTo = [Math.max(pTitle[0], turbulenceTitleBefore[0]) + 160, Math.max(pTitle[1], turbulenceTitleBefore[1]) + 120];
+  await page.keyboard.down("Control");
+  await page.mouse.move(...boxFrom);
+  await page.mouse.down();
+  await page.mouse.move(...boxTo, { steps: 8 });
+  await page.mouse.up();
+  await page.keyboard.up("Control");
+  assert.deepEqual((await page.evaluate(() => window.shadetreeEditor.graphView.selectedIds())).sort(), ["P1", "turbulence1"],
+                   "Ctrl+drag selected the nodes in its box");
+  await page.mouse.click(host.x + 20, host.y + host.height - 20);  // and a click on the canvas none
+  console.log("kind field: volume added bounds and asked for a density, texture took them away; a Ctrl+drag box selected P1 and turbulence1");
 
   // Copy and paste with the wires between the copied nodes; a constant
   // typed in the node panel goes along.
