@@ -11,7 +11,7 @@ import { attributeEditor } from "./curve_editor.js";
 import { copyNodes, pasteNodes } from "./clipboard.js";
 import { documentText } from "./document_text.js";
 import { scopeBody, sourcesOf, upstreamOf, withoutUnreadNodes } from "./graph_document.js";
-import { GpuPreview, shaderKey } from "./gpu_preview.js";
+import { GpuPreview, gpuKinds, shaderKey } from "./gpu_preview.js";
 import { GraphView } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
@@ -531,7 +531,7 @@ async function requestPreview(body, side, key) {
     else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / (side * side);
     state.previews += 1;
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
-    const gpuRefusal = gpu.enabled && state.doc.kind === "texture" && gpu.error ? `; GPU: ${gpu.error}` : "";
+    const gpuRefusal = gpu.enabled && gpuKinds.includes(state.doc.kind) && gpu.error ? `; GPU: ${gpu.error}` : "";
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (CPU, kernel: ${response.headers.get("X-Kernel")}${gpuRefusal})` +
       (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "");
     byId("reset-view").disabled = !view.changed;

@@ -1,11 +1,14 @@
-// Previews of texture graphs drawn by the page's own GPU through WebGL 2:
-// the server writes the graph as GLSL once per structure (POST /api/glsl,
-// glslgen/emit_glsl.h), and a param's new value is a uniform update and a
-// draw, with no request. The server's render (the JIT) stays the
+// Previews of texture and environment graphs drawn by the page's own GPU
+// through WebGL 2: the server writes the graph as GLSL once per structure
+// (POST /api/glsl, glslgen/emit_glsl.h), and a param's new value is a
+// uniform update and a draw, with no request. The server's render (the JIT) stays the
 // fallback, for the other kinds and where the browser has no WebGL 2, and
 // the reference: the "GPU" box switches between them.
 import { api, errorOf } from "./api.js";
 import { GlslCanvas } from "./glsl_canvas.js";
+
+// The kinds whose previews the GPU draws (POST /api/glsl).
+export const gpuKinds = ["texture", "environment"];
 
 // What a graph's shader depends on: the document but its params' values.
 export function shaderKey(doc) {
@@ -34,7 +37,7 @@ export class GpuPreview {
 
   // Whether `doc` (the preview's document) is drawn here.
   accepts(doc) {
-    return this.enabled && doc.kind === "texture" && shaderKey(doc) !== this.refusedKey;
+    return this.enabled && gpuKinds.includes(doc.kind) && shaderKey(doc) !== this.refusedKey;
   }
 
   // Draws `doc` at side x side, frame `frame`: the canvas drawn, or null

@@ -78,7 +78,7 @@ class GlslEmitter {
     }
     std::ostringstream out;
     out << header() << uniforms() << tables() << function();
-    if (ir_.kind == GraphKind::texture) out << (options_.shadertoy ? shadertoy_main() : texture_main());
+    if (has_main()) out << (options_.shadertoy ? shadertoy_main() : image_main());
     GlslShader shader{out.str(), {}};
     if (!options_.shadertoy)
       for (const IrParam& param : ir_.params)
@@ -287,10 +287,10 @@ class GlslEmitter {
       out << "// GLSL ES 3.00 (WebGL 2); desktop GL 3.3 and later take it with \"#version 330 core\" as the\n"
           << "// first line. It computes what shadetree's interpreter computes, in the same operations;\n"
           << "// GPUs may round division, sqrt and fused multiply-adds differently (docs/glsl.md).\n";
-    if (ir_.kind == GraphKind::texture && !options_.shadertoy)
+    if (has_main() && !options_.shadertoy)
       out << "// Draw a full-screen triangle with st_resolution = the target's size in pixels and\n"
           << "// st_frame = the animation frame; st_fragment gets colour and alpha.\n";
-    if (ir_.kind != GraphKind::texture)
+    if (!has_main())
       out << "// Call " << function_name_ << " for each sample, with the globals its signature names, as\n"
           << "// shadetree's " << graph_kind_name(ir_.kind) << " driver does.\n";
     if (!options_.shadertoy) out << "precision highp float;\nprecision highp int;\n";
@@ -380,24 +380,24 @@ class GlslEmitter {
     return out.str();
   }
 
-  // The arguments of the function for the globals it reads, as the
-  // texture driver gives them (render/texture_driver.cpp).
-  std::string texture_call() const {
+  // Whether the kind's driver is a plain image the fragment shader can be:
+  // a texture's domain or an environment's panorama.
+  bool has_main() const { return ir_.kind == GraphKind::texture || ir_.kind == GraphKind::environment; }
+
+  // The arguments of the function for the globals it reads, named as
+  // pixel_globals() declares them.
+  std::string call() const {
     std::vector<std::string> arguments;
     for (GlobalId id : reads_) {
       switch (id) {
-        case GlobalId::P: arguments.push_back("st_P"); break;
-        case GlobalId::N: arguments.push_back("vec3(0.0, 0.0, 1.0)"); break;
-        case GlobalId::uv: arguments.push_back("vec2(st_u, st_v)"); break;
-        case GlobalId::filter_width: arguments.push_back("st_filter_width"); break;
         case GlobalId::time: arguments.push_back(std::string("st_frame / ") + frames_per_second_literal); break;
         case GlobalId::frame: arguments.push_back("st_frame"); break;
-        default: arguments.push_back("0.0"); break;  // read by no texture graph (check refuses them)
+        default: arguments.push_back("st_" + std::string(global_def(id).name)); break;
       }
     }
-    std::string call = function_name_ + "(" + joined(arguments, [](const std::string& a) { return a; });
-    for (const IrOutput& output : ir_.outputs) call += ", " + output_name(output.id);
-    return call + ");";
+    std::string text = function_name_ + "(" + joined(arguments, [](const std::string& a) { return a; });
+    for (const IrOutput& output : ir_.outputs) text += ", " + output_name(output.id);
+    return text + ");";
   }
 
   std::string output_declarations() const {
@@ -413,9 +413,16 @@ class GlslEmitter {
     return "1.0";
   }
 
-  // The pixel at `coordinate` (gl_FragCoord.xy) of an image of `size`, as
-  // render/texture_driver.cpp places it: u, v from the pixel centre
-  // (rows counted from the top), P through the graph's domain.
+  // The globals of the pixel at `coordinate` (gl_FragCoord.xy) of an image
+  // of `size`, as the kind's driver gives them, then the call.
+  std::string pixel_globals(const std::string& coordinate, const std::string& size) const {
+    return (ir_.kind == GraphKind::texture ? texture_pixel(coordinate, size) : environment_pixel(coordinate, size)) +
+           output_declarations() + "  " + call() + "\n";
+  }
+
+  // As render/texture_driver.cpp places it: u, v from the pixel centre
+  // (rows counted from the top), P through the graph's domain, N facing
+  // the viewer, filter_width a pixel's size.
   std::string texture_pixel(const std::string& coordinate, const std::string& size) const {
     const RenderSettings& render = graph_.render;
     std::ostringstream out;
@@ -428,19 +435,41 @@ class GlslEmitter {
         << "  vec3 st_P = vec3(st_domain_min.x + st_u * (st_domain_max.x - st_domain_min.x),\n"
         << "                   st_domain_min.y + st_v * (st_domain_max.y - st_domain_min.y), "
         << lanes::glsl_float(render.z) << ");\n"
+        << "  vec3 st_N = vec3(0.0, 0.0, 1.0);\n"
+        << "  vec2 st_uv = vec2(st_u, st_v);\n"
         << "  vec2 st_span = st_domain_max - st_domain_min;\n"
-        << "  float st_filter_width = max(abs(st_span.x) / " << size << ".x, abs(st_span.y) / " << size << ".y);\n"
-        << output_declarations() << "  " << texture_call() << "\n";
+        << "  float st_filter_width = max(abs(st_span.x) / " << size << ".x, abs(st_span.y) / " << size << ".y);\n";
     return out.str();
   }
 
-  std::string texture_main() const {
+  // As render/environment_driver.cpp: a latitude-longitude panorama,
+  // longitude 0 down -z growing toward +x, latitude +90 degrees on the top
+  // row; I the direction, P the same point of the unit sphere, N = -I, uv
+  // longitude and latitude in [0, 1], filter_width the angle of a pixel.
+  // GLSL's sin, cos, atan and asin stand for the C library's here.
+  std::string environment_pixel(const std::string& coordinate, const std::string& size) const {
+    const std::string pi = lanes::glsl_float(3.14159265358979f);
+    std::ostringstream out;
+    out << "  float st_longitude = 2.0 * " << pi << " * " << coordinate << ".x / " << size << ".x - " << pi << ";\n"
+        << "  float st_latitude = 0.5 * " << pi << " - " << pi << " * (" << size << ".y - " << coordinate << ".y) / "
+        << size << ".y;\n"
+        << "  vec3 st_I = vec3(sin(st_longitude) * cos(st_latitude), sin(st_latitude), "
+           "-cos(st_longitude) * cos(st_latitude));\n"
+        << "  vec3 st_P = st_I;\n"
+        << "  vec3 st_N = -st_I;\n"
+        << "  vec2 st_uv = vec2((atan(st_I.x, -st_I.z) + " << pi << ") / (2.0 * " << pi << "), asin(clamp(st_I.y, -1.0, "
+        << "1.0)) / " << pi << " + 0.5);\n"
+        << "  float st_filter_width = " << pi << " / " << size << ".y;\n";
+    return out.str();
+  }
+
+  std::string image_main() const {
     std::ostringstream out;
     out << "\nuniform vec2 st_resolution;  // the image, in pixels\n"
         << "uniform float st_frame;      // the animation frame\n"
         << "out vec4 st_fragment;\n\n"
         << "void main() {\n"
-        << texture_pixel("gl_FragCoord", "st_resolution") << "  st_fragment = vec4(out_color, " << alpha_text()
+        << pixel_globals("gl_FragCoord", "st_resolution") << "  st_fragment = vec4(out_color, " << alpha_text()
         << ");\n}\n";
     return out.str();
   }
@@ -449,7 +478,7 @@ class GlslEmitter {
     std::ostringstream out;
     out << "\nvoid mainImage(out vec4 fragColor, in vec2 fragCoord) {\n  float st_frame = iTime * "
         << frames_per_second_literal << ";\n"
-        << texture_pixel("fragCoord", "iResolution.xy") << "  fragColor = vec4(out_color, 1.0);\n}\n";
+        << pixel_globals("fragCoord", "iResolution.xy") << "  fragColor = vec4(out_color, 1.0);\n}\n";
     return out.str();
   }
 

@@ -15,8 +15,9 @@
 // A texture graph gets a fragment shader around it, which places each
 // pixel in the graph's domain as `shadetree render` does (uniforms
 // st_resolution and st_frame) and writes colour and alpha to st_fragment;
+// an environment graph one that draws its latitude-longitude panorama;
 // with `shadertoy`, a mainImage for Shadertoy, the params as constants.
-// Other kinds get the function alone.
+// Volume and surface graphs get the function alone.
 #pragma once
 
 #include <cstddef>

@@ -432,10 +432,10 @@ void EditorServer::add_glsl_route() {
     if (!parsed) return send_unprocessable(response, parsed.error());
     Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
     if (!loaded) return send_unprocessable(response, loaded.error());
-    // Only a texture graph's shader has a main(): the others' marcher and
-    // ray caster are not written as GLSL yet.
-    if (loaded->graph->kind != GraphKind::texture)
-      return send_unprocessable(response, invalid_input("the page's GPU draws texture graphs only"));
+    // Only texture and environment graphs' shaders have a main(): the
+    // others' marcher and ray caster are not written as GLSL yet.
+    if (loaded->graph->kind != GraphKind::texture && loaded->graph->kind != GraphKind::environment)
+      return send_unprocessable(response, invalid_input("the page's GPU draws texture and environment graphs only"));
     Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
     if (!shader) return send_unprocessable(response, shader.error());
     nlohmann::json uniforms = nlohmann::json::array();

@@ -46,7 +46,7 @@
 //                               (glslgen/emit_glsl.h): {"source": the fragment shader,
 //                               "uniforms": [{"param", "name", "type", "slot", "components"}]};
 //                               422 with the diagnostic for a graph that does not check, is not
-//                               a texture graph or holds too much data for a shader
+//                               a texture or environment graph or holds too much data for a shader
 //   POST /api/export?path=P&width=W&height=H&frame=F&format=png|exr
 //                               the body rendered as an image file (up to max_export_side)
 //   GET  /api/stats             {"compiles": kernels compiled since start, "compiling": in the

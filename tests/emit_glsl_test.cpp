@@ -1,6 +1,6 @@
 // emit --glsl: every gallery graph gives GLSL that glslangValidator
-// accepts as an ES 3.00 fragment shader (and, for texture graphs, as a
-// Shadertoy mainImage), or is refused in one line naming the node; so
+// accepts as an ES 3.00 fragment shader (and, for texture and environment
+// graphs, as a Shadertoy mainImage), or is refused in one line naming the node; so
 // does every op alone; the uniforms list the params; names a graph
 // supplies are never live code.
 // (tests/glsl_render_test.cpp draws the shaders and compares pixels.)
@@ -53,7 +53,8 @@ TEST(EmitGlsl, GalleryGraphsValidateOrAreRefusedNamingTheNode) {
     }
     ++emitted;
     EXPECT_EQ(validate(folder, name, shader->source), 0) << name << ":\n" << shader->source.substr(0, 2000);
-    if (loaded->graph->kind != GraphKind::texture) continue;
+    const GraphKind kind = loaded->graph->kind;
+    if (kind != GraphKind::texture && kind != GraphKind::environment) continue;
     EXPECT_NE(shader->source.find("void main()"), std::string::npos) << name;
     Result<GlslShader> shadertoy = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {name, true});
     ASSERT_TRUE(shadertoy.ok()) << name;
