@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "glslgen/traced_ops.h"
 #include "graph/generated_names.h"
@@ -66,7 +67,7 @@ class GlslEmitter {
   }
 
   Result<GlslShader> emit() {
-    if (ir_.data.size() > max_glsl_data) return refusal(largest_data(), data_refusal());
+    if (ir_.data.size() > max_glsl_data) return data_refusal();
     register_tables();
     lanes::TraceActivation activation(trace_);
     // A lookup in memory no array was registered for is a bug of this
@@ -95,21 +96,19 @@ class GlslEmitter {
     return error;
   }
 
-  std::size_t largest_data() const {
+  // The op holding the most data, named as the reason a program has too much.
+  Diagnostic data_refusal() const {
     std::size_t largest = 0;
     for (std::size_t i = 1; i < ir_.code.size(); ++i)
       if (ir_.code[i].data_count > ir_.code[largest].data_count) largest = i;
-    return largest;
-  }
-
-  std::string data_refusal() const {
-    const IrInstr& instr = ir_.code[largest_data()];
-    return "op \"" + op_def(instr.op).name + "\" holds " + std::to_string(instr.data_count) +
-           " floats of data, too many for a GLSL shader (at most " + std::to_string(max_glsl_data) + " in all)";
+    const IrInstr& instr = ir_.code[largest];
+    return refusal(largest, "op \"" + op_def(instr.op).name + "\" holds " + std::to_string(instr.data_count) +
+                                " floats of data, too many for a GLSL shader (at most " +
+                                std::to_string(max_glsl_data) + " in all)");
   }
 
   // The arrays table lookups may name: the noise tables of each seed the
-  // program uses, and the ops' data.
+  // program uses, the op library's own tables, and the ops' data.
   void register_tables() {
     for (const IrInstr& instr : ir_.code)
       if (instr.kind == IrOpKind::op && op_def(instr.op).tables == OpTables::noise)
@@ -117,23 +116,36 @@ class GlslEmitter {
     for (int seed : seeds_) {
       const NoiseTables& tables = noise_tables(static_cast<std::uint32_t>(seed));
       const std::string suffix = "_" + std::to_string(seed);
-      trace_.add_table(tables.permutation.data(), noise_table_size, "st_permutation" + suffix);
-      trace_.add_table(tables.gradient_x.data(), noise_table_size, "st_gradient_x" + suffix);
-      trace_.add_table(tables.gradient_y.data(), noise_table_size, "st_gradient_y" + suffix);
-      trace_.add_table(tables.gradient_z.data(), noise_table_size, "st_gradient_z" + suffix);
-      trace_.add_table(tables.hashed_gradient_x.data(), noise_table_size, "st_hashed_gradient_x" + suffix);
-      trace_.add_table(tables.hashed_gradient_y.data(), noise_table_size, "st_hashed_gradient_y" + suffix);
-      trace_.add_table(tables.hashed_gradient_z.data(), noise_table_size, "st_hashed_gradient_z" + suffix);
+      const std::string comment = "Perlin & Hoffert 1989 section 2.3: the noise tables of seed " + std::to_string(seed) + ".";
+      add_array("st_permutation" + suffix, comment, tables.permutation);
+      add_array("st_gradient_x" + suffix, comment, tables.gradient_x);
+      add_array("st_gradient_y" + suffix, comment, tables.gradient_y);
+      add_array("st_gradient_z" + suffix, comment, tables.gradient_z);
+      add_array("st_hashed_gradient_x" + suffix, comment, tables.hashed_gradient_x);
+      add_array("st_hashed_gradient_y" + suffix, comment, tables.hashed_gradient_y);
+      add_array("st_hashed_gradient_z" + suffix, comment, tables.hashed_gradient_z);
     }
-    if (!ir_.data.empty()) trace_.add_table(ir_.data.data(), ir_.data.size(), "st_data");
-    // The op library's own tables.
-    trace_.add_table(improved_noise_permutation.data(), improved_noise_permutation.size(), "st_improved_permutation");
+    add_array("st_improved_permutation", "Perlin 2002's reference permutation, twice over.", improved_noise_permutation);
+    if (!ir_.data.empty()) add_array("st_data", "The ops' data: spline knots, tables, images.", ir_.data);
+  }
+
+  // A const array of `entries` (ints or floats), declared if a lookup names it.
+  template <class Entries>
+  void add_array(const std::string& name, const std::string& comment, const Entries& entries) {
+    using Entry = std::decay_t<decltype(entries[0])>;
+    const std::string type = std::is_same_v<Entry, float> ? "float" : "int";
+    const std::string values = joined(entries, [](Entry v) {
+      if constexpr (std::is_same_v<Entry, float>) return lanes::glsl_float(v);
+      else return lanes::glsl_int(v);
+    });
+    arrays_.push_back({name, comment, type, std::to_string(entries.size()), values});
+    trace_.add_table(entries.data(), entries.size(), name);
   }
 
   int components(std::int32_t value) const { return component_count(ir_.code[value].type); }
 
-  // Value `value` read where `wanted` components are declared: a scalar
-  // is read splatted.
+  // Component c of value `value`: a scalar read where more components are
+  // declared is read splatted.
   TracedDual argument(std::int32_t value, int c) const {
     return values_[value][static_cast<std::size_t>(std::min(c, components(value) - 1))];
   }
@@ -332,36 +344,14 @@ class GlslEmitter {
 
   std::string tables() const {
     std::ostringstream out;
-    auto ints = [](std::int32_t v) { return lanes::glsl_int(v); };
-    for (int seed : seeds_) {
-      const NoiseTables& tables = noise_tables(static_cast<std::uint32_t>(seed));
-      const std::string suffix = "_" + std::to_string(seed);
-      const std::string size = std::to_string(noise_table_size);
-      bool commented = false;
-      auto declare = [&](const std::string& name, const std::string& type, const std::string& values) {
-        if (!trace_.used(name + suffix)) return;
-        if (!commented)
-          out << "\n// Perlin & Hoffert 1989 section 2.3: the noise tables of seed " << seed << ".\n";
-        commented = true;
-        out << "const " << type << " " << name << suffix << "[" << size << "] = " << type << "[" << size << "](\n    "
-            << values << ");\n";
-      };
-      declare("st_permutation", "int", joined(tables.permutation, ints));
-      declare("st_gradient_x", "float", joined(tables.gradient_x, lanes::glsl_float));
-      declare("st_gradient_y", "float", joined(tables.gradient_y, lanes::glsl_float));
-      declare("st_gradient_z", "float", joined(tables.gradient_z, lanes::glsl_float));
-      declare("st_hashed_gradient_x", "float", joined(tables.hashed_gradient_x, lanes::glsl_float));
-      declare("st_hashed_gradient_y", "float", joined(tables.hashed_gradient_y, lanes::glsl_float));
-      declare("st_hashed_gradient_z", "float", joined(tables.hashed_gradient_z, lanes::glsl_float));
+    std::string comment;
+    for (const GlslArray& array : arrays_) {
+      if (!trace_.used(array.name)) continue;
+      if (array.comment != comment) out << "\n// " << array.comment << "\n";
+      comment = array.comment;
+      out << "const " << array.type << " " << array.name << "[" << array.size << "] = " << array.type << "["
+          << array.size << "](\n    " << array.values << ");\n";
     }
-    if (trace_.used("st_improved_permutation")) {
-      const std::size_t size = improved_noise_permutation.size();
-      out << "\n// Perlin 2002's reference permutation, twice over.\nconst int st_improved_permutation[" << size
-          << "] = int[" << size << "](\n    " << joined(improved_noise_permutation, ints) << ");\n";
-    }
-    if (trace_.used("st_data"))
-      out << "\n// The ops' data: spline knots, tables, images.\nconst float st_data[" << ir_.data.size()
-          << "] = float[" << ir_.data.size() << "](\n    " << joined(ir_.data, lanes::glsl_float) << ");\n";
     return out.str();
   }
 
@@ -491,6 +481,10 @@ class GlslEmitter {
   std::map<std::string, std::string> uniform_names_;  // param name -> its uniform
   std::set<GlobalId> reads_;
   std::set<int> seeds_;
+  struct GlslArray {
+    std::string name, comment, type, size, values;
+  };
+  std::vector<GlslArray> arrays_;  // in the order they are declared
   lanes::Trace trace_;
 };
 
