@@ -296,13 +296,18 @@ void loop_while(int cap, Condition condition, Step step, TraceF& first, Rest&...
               }
               if (!active.constant) trace.statement("if (!" + active.text + ") break;");
               step(active, updated...);
-              // Every new value is computed before any state changes.
-              std::vector<std::pair<std::string, std::string>> assignments;
+              // A new value that is another state's variable is copied
+              // first: no assignment may read a variable assigned before it.
+              const std::set<std::string> variables_of_states{state.text...};
+              auto settle = [&](const auto& variable, auto& value) {
+                if (value.text != variable.text && variables_of_states.contains(value.text))
+                  value = std::decay_t<decltype(value)>::of(value.text);
+              };
+              (settle(state, updated), ...);
               auto assign = [&](const auto& variable, const auto& value) {
-                if (variable.text != value.text) assignments.emplace_back(variable.text, value.text);
+                if (variable.text != value.text) trace.statement(variable.text + " = " + value.text + ";");
               };
               (assign(state, updated), ...);
-              for (const auto& [variable, value] : assignments) trace.statement(variable + " = " + value + ";");
             },
             next);
       },

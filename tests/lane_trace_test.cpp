@@ -113,5 +113,22 @@ TEST(LaneTrace, LoopWhileIsOneRolledLoop) {
   EXPECT_EQ(count_of(text, sum.text + " = "), 2) << text;  // declared, then assigned once a step
 }
 
+// States that trade values in a step keep both: the old value of one is
+// copied before the other is assigned over it.
+TEST(LaneTrace, LoopWhileStatesMayTradeValues) {
+  Trace trace;
+  TraceActivation active(trace);
+  TraceF a = TraceF::named("a"), b = TraceF::named("b");
+  loop_while(
+      4, [&](const TraceF& i, const TraceF&, const TraceF&) { return i < TraceF::named("n"); },
+      [&](const TraceM&, TraceF& a, TraceF& b) { std::swap(a, b); }, a, b);
+  const std::string& text = trace.text();
+  EXPECT_EQ(text.find(a.text + " = " + b.text + ";"), std::string::npos) << text;
+  EXPECT_EQ(text.find(b.text + " = " + a.text + ";"), std::string::npos) << text;
+  EXPECT_NE(text.find("float t"), std::string::npos) << text;
+  EXPECT_NE(text.find(" = " + a.text + ";"), std::string::npos) << "a's old value copied:\n" << text;
+  EXPECT_NE(text.find(" = " + b.text + ";"), std::string::npos) << "b's old value copied:\n" << text;
+}
+
 }  // namespace
 }  // namespace shadetree::lanes
