@@ -12,7 +12,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cppgen/emit_cpp.h"
-#include "glslgen/emit_glsl.h"
+#include "render/glsl_shader.h"
 #include "graph/generated_names.h"
 #include "pipeline/compile_graph.h"
 #include "io/output_file.h"
@@ -40,7 +40,7 @@ std::string kernel_name(const EmitArguments& arguments, const Graph& graph) {
 }
 
 Result<std::string> glsl_source(const EmitArguments& arguments, const LoadedGraph& loaded, const std::string& name) {
-  Result<GlslShader> shader = emit_glsl(*loaded.graph, loaded.ir, loaded.params, {name, arguments.shadertoy});
+  Result<GlslShader> shader = glsl_shader(*loaded.graph, loaded.ir, loaded.params, {name, arguments.shadertoy});
   if (!shader) return shader.error();
   return shader->source;
 }
@@ -105,7 +105,7 @@ void add_emit_command(CLI::App& app, CommandRunner& run) {
       ->needs(graph);
   auto* cpp = command->add_flag("--cpp", arguments->cpp, "the kernel as a standalone C++ header");
   auto* glsl = command->add_flag("--glsl", arguments->glsl,
-                                 "the kernel as GLSL ES 3.00 (WebGL 2): a fragment shader for texture graphs");
+                                 "the kernel as GLSL ES 3.00 (WebGL 2): a fragment shader of its driver (texture, environment, volume march, surface)");
   command->add_flag("--shadertoy", arguments->shadertoy, "with --glsl: a mainImage to paste into Shadertoy")
       ->needs(glsl);
   command->add_option("-o,--output", arguments->output, "with --cpp or --glsl: the file to write (default: stdout)");

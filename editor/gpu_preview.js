@@ -1,14 +1,16 @@
-// Previews of texture and environment graphs drawn by the page's own GPU
-// through WebGL 2: the server writes the graph as GLSL once per structure
-// (POST /api/glsl, glslgen/emit_glsl.h), and a param's new value is a
-// uniform update and a draw, with no request. The server's render (the JIT) stays the
-// fallback, for the other kinds and where the browser has no WebGL 2, and
-// the reference: the "GPU" box switches between them.
+// Previews drawn by the page's own GPU through WebGL 2: the server writes
+// the graph and its driver as GLSL once per structure (POST /api/glsl,
+// render/glsl_shader.h: a texture's domain, an environment's panorama, a
+// volume's ray march, a surface on its scene's analytic objects), and a
+// param's new value is a uniform update and a draw, with no request. The
+// server's render (the JIT) stays the fallback, for what the server cannot
+// write as GLSL and where the browser has no WebGL 2, and the reference:
+// the "GPU" box switches between them.
 import { api, errorOf } from "./api.js";
 import { GlslCanvas } from "./glsl_canvas.js";
 
 // The kinds whose previews the GPU draws (POST /api/glsl).
-export const gpuKinds = ["texture", "environment"];
+export const gpuKinds = ["texture", "environment", "volume", "surface"];
 
 // What a graph's shader depends on: the document but its params' values.
 export function shaderKey(doc) {

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "cppgen/emit_cpp.h"
-#include "glslgen/emit_glsl.h"
+#include "render/glsl_shader.h"
 #include "interp/interpreter.h"
 #include "interp/interval_program.h"
 #include "ir/verify.h"
@@ -140,7 +140,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     source = emit_cpp(*loaded->graph, loaded->ir, loaded->params, loaded->graph->name);
     if (source) source = emitted_program(*source);
   } else if (emitter == 2) {
-    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
+    Result<GlslShader> shader = glsl_shader(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
     if (shader) source = shader->source;
   }
   if (source) {

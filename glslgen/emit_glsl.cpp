@@ -24,13 +24,6 @@ namespace {
 using lanes::TraceF;
 using lanes::TraceType;
 
-// The frames of `shadetree render` (time = frame / frames_per_second).
-constexpr const char* frames_per_second_literal = "24.0";
-
-std::string glsl_vector_type(int components) {
-  return components == 1 ? "float" : "vec" + std::to_string(components);
-}
-
 template <class Values, class Format>
 std::string joined(const Values& values, Format format, const std::string& separator = ", ") {
   std::string text;
@@ -66,7 +59,7 @@ class GlslEmitter {
       if (instr.kind == IrOpKind::global) reads_.insert(static_cast<GlobalId>(instr.immediate[0]));
   }
 
-  Result<GlslShader> emit() {
+  Result<GlslFunction> emit() {
     if (ir_.data.size() > max_glsl_data) return data_refusal();
     register_tables();
     lanes::TraceActivation activation(trace_);
@@ -77,15 +70,16 @@ class GlslEmitter {
     } catch (const std::logic_error& error) {
       return failure(std::string("cannot write the program as GLSL: ") + error.what());
     }
-    std::ostringstream out;
-    out << header() << uniforms() << tables() << function();
-    if (has_main()) out << (options_.shadertoy ? shadertoy_main() : image_main());
-    GlslShader shader{out.str(), {}};
+    GlslFunction result;
+    result.name = function_name_;
+    result.declarations = uniforms() + tables() + function();
+    result.reads.assign(reads_.begin(), reads_.end());
+    for (const IrOutput& output : ir_.outputs) result.outputs.push_back({output.id, component_count(output.type)});
     if (!options_.shadertoy)
       for (const IrParam& param : ir_.params)
-        shader.uniforms.push_back({param.name, uniform_names_.at(param.name), param_type(param), param.slot,
+        result.uniforms.push_back({param.name, uniform_names_.at(param.name), param_type(param), param.slot,
                                    component_count(param.type)});
-    return shader;
+    return result;
   }
 
  private:
@@ -279,34 +273,10 @@ class GlslEmitter {
       const int count = component_count(output.type);
       std::vector<std::string> parts;
       for (int c = 0; c < count; ++c) parts.push_back(argument(output.value, c).value.text);
-      trace_.statement(output_name(output.id) + " = " + glsl_vector_type(count) + "(" +
+      trace_.statement(glsl_output_name(output.id) + " = " + glsl_vector_type(count) + "(" +
                        joined(parts, [](const std::string& p) { return p; }) + ");");
     }
     return Done{};
-  }
-
-  static std::string output_name(OutputId id) { return "out_" + std::string(output_id_name(id)); }
-
-  std::string header() const {
-    std::ostringstream out;
-    if (!options_.shadertoy) out << "#version 300 es\n";
-    out << "// " << function_name_ << ": the " << graph_kind_name(ir_.kind) << " graph "
-        << (graph_.file.empty() ? std::string("given") : quoted_text(graph_.file))
-        << ", written by `shadetree emit --glsl" << (options_.shadertoy ? " --shadertoy" : "") << "`.\n";
-    if (options_.shadertoy)
-      out << "// Paste it into Shadertoy's Image tab. time is iTime; the frame is iTime * 24.\n";
-    else
-      out << "// GLSL ES 3.00 (WebGL 2); desktop GL 3.3 and later take it with \"#version 330 core\" as the\n"
-          << "// first line. It computes what shadetree's interpreter computes, in the same operations;\n"
-          << "// GPUs may round division, sqrt and fused multiply-adds differently (docs/glsl.md).\n";
-    if (has_main() && !options_.shadertoy)
-      out << "// Draw a full-screen triangle with st_resolution = the target's size in pixels and\n"
-          << "// st_frame = the animation frame; st_fragment gets colour and alpha.\n";
-    if (!has_main())
-      out << "// Call " << function_name_ << " for each sample, with the globals its signature names, as\n"
-          << "// shadetree's " << graph_kind_name(ir_.kind) << " driver does.\n";
-    if (!options_.shadertoy) out << "precision highp float;\nprecision highp int;\n";
-    return out.str();
   }
 
   std::string param_default(const IrParam& param) const {
@@ -362,113 +332,11 @@ class GlslEmitter {
       parameters.push_back(glsl_vector_type(global.components) + " " + std::string(global.name));
     }
     for (const IrOutput& output : ir_.outputs)
-      parameters.push_back("out " + glsl_vector_type(component_count(output.type)) + " " + output_name(output.id));
+      parameters.push_back("out " + glsl_vector_type(component_count(output.type)) + " " + glsl_output_name(output.id));
     std::ostringstream out;
     out << "\nvoid " << function_name_ << "(" << joined(parameters, [](const std::string& p) { return p; })
         << ") {\n"
         << trace_.text() << "}\n";
-    return out.str();
-  }
-
-  // Whether the kind's driver is a plain image the fragment shader can be:
-  // a texture's domain or an environment's panorama.
-  bool has_main() const { return ir_.kind == GraphKind::texture || ir_.kind == GraphKind::environment; }
-
-  // The arguments of the function for the globals it reads, named as
-  // pixel_globals() declares them.
-  std::string call() const {
-    std::vector<std::string> arguments;
-    for (GlobalId id : reads_) {
-      switch (id) {
-        case GlobalId::time: arguments.push_back(std::string("st_frame / ") + frames_per_second_literal); break;
-        case GlobalId::frame: arguments.push_back("st_frame"); break;
-        default: arguments.push_back("st_" + std::string(global_def(id).name)); break;
-      }
-    }
-    std::string text = function_name_ + "(" + joined(arguments, [](const std::string& a) { return a; });
-    for (const IrOutput& output : ir_.outputs) text += ", " + output_name(output.id);
-    return text + ");";
-  }
-
-  std::string output_declarations() const {
-    std::string text;
-    for (const IrOutput& output : ir_.outputs)
-      text += "  " + glsl_vector_type(component_count(output.type)) + " " + output_name(output.id) + ";\n";
-    return text;
-  }
-
-  std::string alpha_text() const {
-    for (const IrOutput& output : ir_.outputs)
-      if (output.id == OutputId::alpha) return output_name(OutputId::alpha);
-    return "1.0";
-  }
-
-  // The globals of the pixel at `coordinate` (gl_FragCoord.xy) of an image
-  // of `size`, as the kind's driver gives them, then the call.
-  std::string pixel_globals(const std::string& coordinate, const std::string& size) const {
-    return (ir_.kind == GraphKind::texture ? texture_pixel(coordinate, size) : environment_pixel(coordinate, size)) +
-           output_declarations() + "  " + call() + "\n";
-  }
-
-  // As render/texture_driver.cpp places it: u, v from the pixel centre
-  // (rows counted from the top), P through the graph's domain, N facing
-  // the viewer, filter_width a pixel's size.
-  std::string texture_pixel(const std::string& coordinate, const std::string& size) const {
-    const RenderSettings& render = graph_.render;
-    std::ostringstream out;
-    out << "  const vec2 st_domain_min = vec2(" << lanes::glsl_float(render.domain_min[0]) << ", "
-        << lanes::glsl_float(render.domain_min[1]) << ");\n"
-        << "  const vec2 st_domain_max = vec2(" << lanes::glsl_float(render.domain_max[0]) << ", "
-        << lanes::glsl_float(render.domain_max[1]) << ");\n"
-        << "  float st_u = " << coordinate << ".x / " << size << ".x;\n"
-        << "  float st_v = 1.0 - (" << size << ".y - " << coordinate << ".y) / " << size << ".y;\n"
-        << "  vec3 st_P = vec3(st_domain_min.x + st_u * (st_domain_max.x - st_domain_min.x),\n"
-        << "                   st_domain_min.y + st_v * (st_domain_max.y - st_domain_min.y), "
-        << lanes::glsl_float(render.z) << ");\n"
-        << "  vec3 st_N = vec3(0.0, 0.0, 1.0);\n"
-        << "  vec2 st_uv = vec2(st_u, st_v);\n"
-        << "  vec2 st_span = st_domain_max - st_domain_min;\n"
-        << "  float st_filter_width = max(abs(st_span.x) / " << size << ".x, abs(st_span.y) / " << size << ".y);\n";
-    return out.str();
-  }
-
-  // As render/environment_driver.cpp: a latitude-longitude panorama,
-  // longitude 0 down -z growing toward +x, latitude +90 degrees on the top
-  // row; I the direction, P the same point of the unit sphere, N = -I, uv
-  // longitude and latitude in [0, 1], filter_width the angle of a pixel.
-  // GLSL's sin, cos, atan and asin stand for the C library's here.
-  std::string environment_pixel(const std::string& coordinate, const std::string& size) const {
-    const std::string pi = lanes::glsl_float(3.14159265358979f);
-    std::ostringstream out;
-    out << "  float st_longitude = 2.0 * " << pi << " * " << coordinate << ".x / " << size << ".x - " << pi << ";\n"
-        << "  float st_latitude = 0.5 * " << pi << " - " << pi << " * (" << size << ".y - " << coordinate << ".y) / "
-        << size << ".y;\n"
-        << "  vec3 st_I = vec3(sin(st_longitude) * cos(st_latitude), sin(st_latitude), "
-           "-cos(st_longitude) * cos(st_latitude));\n"
-        << "  vec3 st_P = st_I;\n"
-        << "  vec3 st_N = -st_I;\n"
-        << "  vec2 st_uv = vec2((atan(st_I.x, -st_I.z) + " << pi << ") / (2.0 * " << pi << "), asin(clamp(st_I.y, -1.0, "
-        << "1.0)) / " << pi << " + 0.5);\n"
-        << "  float st_filter_width = " << pi << " / " << size << ".y;\n";
-    return out.str();
-  }
-
-  std::string image_main() const {
-    std::ostringstream out;
-    out << "\nuniform vec2 st_resolution;  // the image, in pixels\n"
-        << "uniform float st_frame;      // the animation frame\n"
-        << "out vec4 st_fragment;\n\n"
-        << "void main() {\n"
-        << pixel_globals("gl_FragCoord", "st_resolution") << "  st_fragment = vec4(out_color, " << alpha_text()
-        << ");\n}\n";
-    return out.str();
-  }
-
-  std::string shadertoy_main() const {
-    std::ostringstream out;
-    out << "\nvoid mainImage(out vec4 fragColor, in vec2 fragCoord) {\n  float st_frame = iTime * "
-        << frames_per_second_literal << ";\n"
-        << pixel_globals("fragCoord", "iResolution.xy") << "  fragColor = vec4(out_color, 1.0);\n}\n";
     return out.str();
   }
 
@@ -490,8 +358,34 @@ class GlslEmitter {
 
 }  // namespace
 
-Result<GlslShader> emit_glsl(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
-                             const GlslOptions& options) {
+std::string glsl_output_name(OutputId id) { return "out_" + std::string(output_id_name(id)); }
+
+std::string glsl_vector_type(int components) {
+  return components == 1 ? "float" : "vec" + std::to_string(components);
+}
+
+std::string GlslFunction::output_declarations(const std::string& indent) const {
+  std::string text;
+  for (const Output& output : outputs)
+    text += indent + glsl_vector_type(output.components) + " " + glsl_output_name(output.id) + ";\n";
+  return text;
+}
+
+std::string GlslFunction::call(const std::function<std::string(GlobalId)>& argument) const {
+  std::vector<std::string> arguments;
+  for (GlobalId id : reads) arguments.push_back(argument(id));
+  for (const Output& output : outputs) arguments.push_back(glsl_output_name(output.id));
+  std::string text = name + "(";
+  for (std::size_t i = 0; i < arguments.size(); ++i) text += (i > 0 ? ", " : "") + arguments[i];
+  return text + ");";
+}
+
+bool GlslFunction::writes(OutputId id) const {
+  return std::any_of(outputs.begin(), outputs.end(), [&](const Output& output) { return output.id == id; });
+}
+
+Result<GlslFunction> emit_glsl_function(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
+                                        const GlslOptions& options) {
   return GlslEmitter(graph, ir, param_block, options).emit();
 }
 

@@ -1,6 +1,5 @@
 // ShadeIR to GLSL ES 3.00, the language of WebGL 2 (`shadetree emit
-// --glsl`; desktop GL 3.3 and later take it with "#version 330 core" as
-// its first line). The optimized program becomes one function,
+// --glsl`). The optimized program becomes one function,
 //
 //   void NAME(<each global it reads>, out <each output as out_NAME>)
 //
@@ -9,24 +8,24 @@
 // the same operations and order (GPU floats round sqrt, division and
 // contracted multiply-adds their own way: docs/glsl.md). The graph's
 // params are uniforms (u_ and the param's name; ints and bools as int and
-// bool), its noise tables and op data const arrays, its conditional
-// regions `if` blocks, its capped loops `for` loops.
+// bool), or constants at their defaults for Shadertoy, its noise tables
+// and op data const arrays, its conditional regions `if` blocks, its
+// capped loops `for` loops.
 //
-// A texture graph gets a fragment shader around it, which places each
-// pixel in the graph's domain as `shadetree render` does (uniforms
-// st_resolution and st_frame) and writes colour and alpha to st_fragment;
-// an environment graph one that draws its latitude-longitude panorama;
-// with `shadertoy`, a mainImage for Shadertoy, the params as constants.
-// Volume and surface graphs get the function alone.
+// The shader around the function, which places the samples as the
+// graph's driver does, is the kinds table's (render/glsl_shader.h).
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "graph/diagnostic.h"
 #include "graph/graph.h"
 #include "ir/shade_ir.h"
+#include "nodes/globals.h"
+#include "nodes/output_contract.h"
 
 namespace shadetree {
 
@@ -50,13 +49,32 @@ struct GlslUniform {
   int components = 1;
 };
 
-struct GlslShader {
-  std::string source;
+// The graph's function and what it needs: its params and tables.
+struct GlslFunction {
+  std::string name;
+  std::string declarations;  // the params, the const arrays and the function
+  std::vector<GlobalId> reads;  // its first parameters, in order
+  struct Output {
+    OutputId id;
+    int components;
+  };
+  std::vector<Output> outputs;  // its out parameters (out_NAME), in order
   std::vector<GlslUniform> uniforms;  // none with shadertoy (constants)
+
+  // "vec3 out_color;\n..." : a variable for each output.
+  std::string output_declarations(const std::string& indent) const;
+  // "NAME(<argument(global) for each global read>, out_...);"
+  std::string call(const std::function<std::string(GlobalId)>& argument) const;
+  bool writes(OutputId id) const;
 };
 
+// "out_color": the variable and out parameter of an output.
+std::string glsl_output_name(OutputId id);
+// float, vec2 or vec3.
+std::string glsl_vector_type(int components);
+
 // `param_block` holds the params' values (the defaults the shader states).
-Result<GlslShader> emit_glsl(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
-                             const GlslOptions& options);
+Result<GlslFunction> emit_glsl_function(const Graph& graph, const ShadeIR& ir, const std::vector<float>& param_block,
+                                        const GlslOptions& options);
 
 }  // namespace shadetree

@@ -14,13 +14,13 @@ namespace {
 constexpr GraphKindDriver drivers[] = {
     // Surface and volume samples at a point are the texture's: P, uv over
     // the render domain and the pixel's filter width, N = +z.
-    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr, texture_sample_at},
+    {GraphKind::texture, 0, "rendering", "samples", false, prepare_texture, nullptr, texture_sample_at, texture_glsl},
     {GraphKind::surface, option_samples_per_pixel | option_object | option_shadows, "rendering", "samples", true,
-     prepare_surface, nullptr, texture_sample_at},
+     prepare_surface, nullptr, texture_sample_at, surface_glsl},
     {GraphKind::volume, option_shadows | option_step | option_jitter | option_normals, "marching", "rays", true, prepare_volume,
-     volume_thumbnail, texture_sample_at},
+     volume_thumbnail, texture_sample_at, volume_glsl},
     {GraphKind::environment, 0, "rendering", "directions", false, prepare_environment, nullptr,
-     environment_sample_at},
+     environment_sample_at, environment_glsl},
 };
 static_assert(std::size(drivers) == graph_kind_count, "a driver for every kind of nodes/graph_kind.h");
 static_assert([] {

@@ -19,6 +19,7 @@
 #include "graph/json_reader.h"
 #include "ir/kernel.h"
 #include "nodes/image.h"
+#include "render/glsl_drivers.h"
 #include "schedule/image_tiles.h"
 #include "schedule/progress.h"
 
@@ -117,6 +118,8 @@ struct GraphKindDriver {
   // an environment) in an image of `size`, stored as sample 0 of `buffers`.
   PointSample (*sample_at_point)(const Graph& graph, std::pair<int, int> size, const float at[3],
                                  SampleBuffers& buffers);
+  // The driver as GLSL, around the graph's function (render/glsl_drivers.h).
+  Result<GlslDriver> (*glsl_driver)(const Graph& graph, const GlslFunction& function);
 };
 
 const GraphKindDriver& graph_kind_driver(GraphKind kind);

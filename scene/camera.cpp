@@ -6,6 +6,10 @@
 
 namespace shadetree {
 
+float camera_half_height(const CameraDesc& desc) {
+  return desc.orthographic ? desc.orthographic_height / 2.0f : std::tan(desc.fov_degrees * 3.14159265358979f / 360.0f);
+}
+
 Camera::Camera(const CameraDesc& desc, int width, int height)
     : position_(desc.position[0], desc.position[1], desc.position[2]),
       orthographic_(desc.orthographic),
@@ -16,8 +20,7 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
   forward_ = glm::normalize(target - position_);
   right_ = glm::normalize(glm::cross(forward_, up));
   up_ = glm::cross(right_, forward_);
-  half_height_ = orthographic_ ? desc.orthographic_height / 2.0f
-                               : std::tan(desc.fov_degrees * 3.14159265358979f / 360.0f);
+  half_height_ = camera_half_height(desc);
   half_width_ = half_height_ * static_cast<float>(width) / static_cast<float>(height);
 }
 

@@ -8,6 +8,10 @@
 
 namespace shadetree {
 
+// Half the image plane's height: at distance 1 for a perspective camera,
+// in world units for an orthographic one.
+float camera_half_height(const CameraDesc& desc);
+
 class Camera {
  public:
   // The description must be valid (parse_scene checks position != target

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "glslgen/emit_glsl.h"
+#include "render/glsl_shader.h"
 #include "graph/parse.h"
 #include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
@@ -432,11 +432,7 @@ void EditorServer::add_glsl_route() {
     if (!parsed) return send_unprocessable(response, parsed.error());
     Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
     if (!loaded) return send_unprocessable(response, loaded.error());
-    // Only texture and environment graphs' shaders have a main(): the
-    // others' marcher and ray caster are not written as GLSL yet.
-    if (loaded->graph->kind != GraphKind::texture && loaded->graph->kind != GraphKind::environment)
-      return send_unprocessable(response, invalid_input("the page's GPU draws texture and environment graphs only"));
-    Result<GlslShader> shader = emit_glsl(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
+    Result<GlslShader> shader = glsl_shader(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
     if (!shader) return send_unprocessable(response, shader.error());
     nlohmann::json uniforms = nlohmann::json::array();
     for (const GlslUniform& uniform : shader->uniforms)

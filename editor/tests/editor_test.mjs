@@ -136,7 +136,7 @@ try {
   const saveWithKeys = async (path) => {
     await watchStatus();
     await pressKeys("Control", "s");
-    await page.waitForFunction((path) => window.statusesShown.includes(`saved ${path}`), { timeout: 5000 }, path);
+    await page.waitForFunction((path) => window.statusesShown.includes(`saved ${path}`), { timeout: 20000 }, path);
     return readFileSync(join(folder, path), "utf8");
   };
   const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
@@ -393,12 +393,18 @@ try {
 
   // A volume: its first picture is a draft, refined to the full size; a
   // slider drag draws drafts, and a pause refines them too.
+  // The server's drafts: the GPU box off, where headless Chromium offers
+  // WebGL all the same (SwiftShader).
   copyFileSync(join(source, "graphs", "fireball.json"), join(folder, "fireball.json"));
+  await page.evaluate(() => {
+    const box = document.getElementById("gpu");
+    if (!document.getElementById("gpu-label").hidden && box.checked) box.click();
+  });
   const previewsBeforeVolume = await page.evaluate(() => window.shadetreeEditor.state.previews);
   await page.evaluate(() => window.shadetreeEditor.open("fireball.json"));
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
   assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeVolume + 2,
-            "opening draws a draft, then the full preview");
+            `opening draws a draft, then the full preview: ${await page.evaluate(() => document.getElementById("preview-info").textContent)}`);
   await dragSlider("scale", 6);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: 10000, polling: 5 });
   const draftSide = await page.evaluate(() => window.shadetreeEditor.state.drawnSide);
@@ -834,6 +840,34 @@ try {
     assert.ok(largest <= 1, `GPU and CPU previews of marble within one level of 255 (largest difference ${largest})`);
     console.log(`marble.json on the page's GPU: a slider drag drew ${drawnByDrag} previews with no request to the server; ` +
                 `the server's preview differs by at most ${largest} of 255`);
+    // A volume marched by the GPU (the GLSL marcher) against the server's
+    // full preview (the GPU box is off now): fireball has no shadows, so
+    // both march the same samples.
+    const previewsBeforeFireball = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
+    await gpuPage.evaluate(() => window.shadetreeEditor.open("fireball.json"));
+    // Its first picture is a draft, then the full one.
+    const fullCpuPreview = (before) => {
+      const { state } = window.shadetreeEditor;
+      const text = document.getElementById("preview-info").textContent;
+      return state.previews >= before + 2 && state.drawnSide === 256 && text.includes("CPU") && !text.includes("refining");
+    };
+    await gpuPage.waitForFunction(fullCpuPreview, { timeout: 60000 }, previewsBeforeFireball)
+      .catch(async (error) => { throw new Error(`no full CPU preview of fireball.json: ${await info()} (${error})`); });
+    const fireballCpu = await pixels();
+    await gpuPage.click("#gpu");
+    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("GPU"), { timeout: 60000 })
+      .catch(async (error) => { throw new Error(`no GPU preview of fireball.json: ${await info()} (${error})`); });
+    const fireballGpu = await pixels();
+    let fireballLargest = 0, fireballSum = 0;
+    for (let i = 0; i < fireballCpu.length; ++i) {
+      const difference = Math.abs(fireballCpu[i] - fireballGpu[i]);
+      fireballLargest = Math.max(fireballLargest, difference);
+      fireballSum += difference;
+    }
+    assert.ok(fireballLargest <= 1, `GPU and CPU previews of fireball within one level of 255 (largest difference ${fireballLargest})`);
+    assert.ok(new Set(fireballGpu).size > 64, "the fireball is drawn, not a blank");
+    console.log(`fireball.json on the page's GPU: differs from the server's by at most ${fireballLargest} of 255 ` +
+                `(mean ${(fireballSum / fireballCpu.length).toFixed(4)}); ${await info()}`);
   } finally {
     await Promise.race([gpuBrowser.close(), new Promise((resolve) => setTimeout(resolve, 3000))]);
     gpuBrowser.process()?.kill("SIGKILL");
