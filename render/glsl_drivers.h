@@ -28,8 +28,7 @@ Result<GlslDriver> texture_glsl(const Graph& graph, const GlslFunction& function
 // As render/environment_driver.cpp draws its latitude-longitude panorama.
 Result<GlslDriver> environment_glsl(const Graph& graph, const GlslFunction& function);
 // render/volume_driver.cpp's march with exact shadows (`--shadows exact`),
-// the gradient by two probes; a refracting graph (an "ior" output) is
-// refused.
+// the gradient by two probes, refraction where the index changes.
 Result<GlslDriver> volume_glsl(const Graph& graph, const GlslFunction& function);
 // render/surface_driver.cpp at one sample per pixel, on its scene's
 // analytic objects.

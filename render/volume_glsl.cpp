@@ -63,9 +63,7 @@ float st_shadow(vec3 x, int light) {
   float transmittance = 1.0;
   int segments_left = int(min(ceil((end - t) / st_shadow_step), st_max_steps_across)) + 1;
   while (t < end && segments_left > 0) {
-    float density, opacity;
-    vec3 color, normal;
-    st_sample(x + (t + 0.5 * min(st_shadow_step, end - t)) * direction, direction, density, opacity, color, normal);
+    float opacity = st_sample(x + (t + 0.5 * min(st_shadow_step, end - t)) * direction, direction).opacity;
     transmittance *= 1.0 - st_segment_alpha(opacity, min(st_shadow_step, end - t));
     t += st_shadow_step;
     --segments_left;
@@ -109,38 +107,33 @@ vec3 st_march(vec3 origin, vec3 along, int column, int row) {
   // -1: the probe before the entry, for the first gradient.
   int segment = st_probes ? -1 : 0;
   float previous_t = 0.0, previous_density = 0.0;
+  float ior = 1.0;  // of what the ray travels through
   vec3 color = vec3(0.0);
   float alpha = 0.0;
-  for (;;) {
+  for (int taken = 0; taken < st_max_samples; ++taken) {
     float start = entry + float(segment) * st_step;
     float segment_length = min(st_step, exit - start);
     float t = segment < 0 ? entry - (1.0 - jitter) * st_step : start + jitter * segment_length;
     vec3 x = origin + t * along;
-    float density, opacity;
-    vec3 sample_color, own_normal;
-    st_sample(x, along, density, opacity, sample_color, own_normal);
+    st_Sample here = st_sample(x, along);
     vec3 normal = -along;
-    if (st_gradients && segment >= 0 && density > 0.0 && density < 1.0) {
-      vec3 gradient = -own_normal;
-      if (st_probes) {
-        float toward_v, toward_w, unused_opacity;
-        vec3 unused_color, unused_normal;
-        st_sample(x + st_step * across_v, along, toward_v, unused_opacity, unused_color, unused_normal);
-        st_sample(x + st_step * across_w, along, toward_w, unused_opacity, unused_color, unused_normal);
-        gradient = (density - previous_density) / max(t - previous_t, 1e-30) * along +
-                   (toward_v - density) / st_step * across_v + (toward_w - density) / st_step * across_w;
-      }
+    if (st_gradients && segment >= 0 && here.density > 0.0 && here.density < 1.0) {
+      vec3 gradient = -here.normal;
+      if (st_probes)
+        gradient = (here.density - previous_density) / max(t - previous_t, 1e-30) * along +
+                   (st_sample(x + st_step * across_v, along).density - here.density) / st_step * across_v +
+                   (st_sample(x + st_step * across_w, along).density - here.density) / st_step * across_w;
       float size = length(gradient);
       if (size > 0.0 && !isinf(size) && !isnan(size)) normal = -gradient / size;
     }
-    if (segment >= 0 && opacity > 0.0) {
-      vec3 shaded = st_writes_color ? sample_color : vec3(1.0);
+    if (segment >= 0 && here.opacity > 0.0) {
+      vec3 shaded = here.color;
       // Faint samples (per reference step, through what the ray still lets
       // through) send no shadow rays.
       if (st_lighting)
-        shaded = st_lit(shaded, x, normal, -along, st_shadows && opacity * (1.0 - alpha) >= 1.0 / 64.0,
+        shaded = st_lit(shaded, x, normal, -along, st_shadows && here.opacity * (1.0 - alpha) >= 1.0 / 64.0,
                         2.0 * st_reference_step);
-      float weight = st_segment_alpha(opacity, segment_length) * (1.0 - alpha);
+      float weight = st_segment_alpha(here.opacity, segment_length) * (1.0 - alpha);
       float sum = shaded.x + shaded.y + shaded.z;
       if (!isinf(sum) && !isnan(sum)) {
         color += weight * shaded;
@@ -148,8 +141,35 @@ vec3 st_march(vec3 origin, vec3 along, int column, int row) {
       }
     }
     previous_t = t;
-    previous_density = density;
+    previous_density = here.density;
     ++segment;
+    // 1989 blue glass: where the index changes, the ray bends by Snell's
+    // law about the gradient (or reflects past the critical angle) and
+    // marches on from the sample through the rest of the box.
+    float sample_ior = clamp(here.ior, 0.1, 10.0);
+    if (st_refracts && segment > 0 && abs(sample_ior - ior) > 1e-4) {
+      vec3 n = normal;
+      float cosine = -dot(n, along);
+      if (cosine < 0.0) {
+        n = -n;
+        cosine = -cosine;
+      }
+      float eta = ior / sample_ior;
+      float k = 1.0 - eta * eta * (1.0 - cosine * cosine);
+      vec3 bent = k < 0.0 ? along + 2.0 * cosine * n : eta * along + (eta * cosine - sqrt(k)) * n;
+      float bent_length = length(bent);
+      ior = sample_ior;
+      if (bent_length > 0.0 && !isinf(bent_length) &&
+          st_clip_to_box(x, bent / bent_length, st_bounds_min, st_bounds_max, near, far, near_axis, far_axis)) {
+        origin = x;
+        along = bent / bent_length;
+        st_ray_frame(along, across_v, across_w);
+        entry = 0.0;
+        has_hit = st_intersect(origin, along, 0.0, st_infinity, hit);
+        exit = max(has_hit ? min(far, hit.t) : far, 0.0);
+        segment = -1;
+      }
+    }
     if (entry + float(segment) * st_step >= exit || alpha >= 1.0 - st_termination) break;
   }
   if (has_hit && alpha < 1.0 - st_termination) return color + (1.0 - alpha) * st_object_color_at(hit, -along);
@@ -159,10 +179,12 @@ vec3 st_march(vec3 origin, vec3 along, int column, int row) {
 
 // The sampler the march calls: the graph at P seen along I, as the
 // marcher's kernel calls give it (filter_width the step, no incoming
-// density, N and uv 0), its opacity (default: the density) clamped.
+// density, N and uv 0): its density, its opacity (default: the density)
+// clamped, its colour (default: white), normal and index of refraction.
 std::string sampler(const GlslFunction& function) {
   std::ostringstream out;
-  out << "\nvoid st_sample(vec3 P, vec3 I, out float density, out float opacity, out vec3 color, out vec3 normal) {\n"
+  out << "\nstruct st_Sample {\n  float density, opacity;\n  vec3 color, normal;\n  float ior;\n};\n\n"
+      << "st_Sample st_sample(vec3 P, vec3 I) {\n"
       << function.output_declarations("  ") << "  "
       << function.call([](GlobalId id) -> std::string {
            switch (id) {
@@ -178,11 +200,11 @@ std::string sampler(const GlslFunction& function) {
              }
            }
          })
-      << "\n  density = out_density;\n"
-      << "  opacity = clamp(" << (function.writes(OutputId::opacity) ? "out_opacity" : "out_density")
-      << ", 0.0, 1.0);\n"
-      << "  color = " << (function.writes(OutputId::color) ? "out_color" : "vec3(1.0)") << ";\n"
-      << "  normal = " << (function.writes(OutputId::normal) ? "out_normal" : "vec3(0.0)") << ";\n}\n";
+      << "\n  return st_Sample(out_density, clamp("
+      << (function.writes(OutputId::opacity) ? "out_opacity" : "out_density") << ", 0.0, 1.0), "
+      << (function.writes(OutputId::color) ? "out_color" : "vec3(1.0)") << ", "
+      << (function.writes(OutputId::normal) ? "out_normal" : "vec3(0.0)") << ", "
+      << (function.writes(OutputId::ior) ? "out_ior" : "1.0") << ");\n}\n";
   return out.str();
 }
 
@@ -194,14 +216,19 @@ std::string vec3_text(const std::array<float, 3>& v) {
 
 Result<GlslDriver> volume_glsl(const Graph& graph, const GlslFunction& function) {
   if (!graph.render.volume) return invalid_input("a volume graph needs render.volume to be marched");
-  if (function.writes(OutputId::ior))
-    return invalid_input("the graph refracts (its output \"ior\"), which the GLSL ray marcher does not do yet");
   const VolumeDesc& volume = *graph.render.volume;
   const SceneDesc scene = volume_scene(graph.render.scene);
   Result<std::string> scene_text = scene_glsl(scene);
   if (!scene_text) return scene_text.error();
   const bool lit = scene.lighting == Lighting::lit;
-  const bool gradients = lit;
+  const bool refracts = function.writes(OutputId::ior);
+  const bool gradients = lit || refracts;
+  // However its rays bend, a pixel's march takes at most this many
+  // samples: eight times the steps across the box's diagonal (a GPU must
+  // not loop for ever; the CPU's rays end where their bends let them).
+  const glm::vec3 diagonal(volume.bounds_max[0] - volume.bounds_min[0], volume.bounds_max[1] - volume.bounds_min[1],
+                           volume.bounds_max[2] - volume.bounds_min[2]);
+  const float samples = 8.0f * (std::ceil(glm::length(diagonal) / march_step(volume)) + 2.0f);
   std::ostringstream out;
   out << *scene_text << "\n// The volume (render.volume) and the march.\n"
       << "const vec3 st_bounds_min = " << vec3_text(volume.bounds_min) << ";\n"
@@ -216,7 +243,8 @@ Result<GlslDriver> volume_glsl(const Graph& graph, const GlslFunction& function)
       << "const bool st_shadows = " << (lit && scene.shadows && !scene.lights.empty() ? "true" : "false") << ";\n"
       << "const bool st_gradients = " << (gradients ? "true" : "false") << ";\n"
       << "const bool st_probes = " << (gradients && !function.writes(OutputId::normal) ? "true" : "false") << ";\n"
-      << "const bool st_writes_color = " << (function.writes(OutputId::color) ? "true" : "false") << ";\n"
+      << "const bool st_refracts = " << (refracts ? "true" : "false") << ";\n"
+      << "const int st_max_samples = " << static_cast<long>(samples) << ";\n"
       << sampler(function) << march_functions;
   const std::string pixel =
       "  vec2 st_pixel = vec2(st_coordinate.x, st_size.y - st_coordinate.y);\n"

@@ -44,7 +44,6 @@ const std::map<std::string, std::string> refusals = {
     {"composite", data_refusal},
     {"stones_applied", data_refusal},
     {"mesh_hypertexture", data_refusal},
-    {"blue_glass", "the graph refracts"},
     {"marble_vase", "scene object #1 is a surface of revolution"},
     {"mesh_knot", "scene object #1 is a mesh"},
     {"ocean", "the scene's environment sunset_sky.json"},
