@@ -1,5 +1,6 @@
 #include "render/scene_glsl.h"
 
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -289,7 +290,17 @@ Result<std::string> scene_glsl(const SceneDesc& scene) {
   Result<Scene> built = Scene::build(scene, "", {});
   if (!built) return built.error();
   std::vector<std::string> world_to_object, normal_to_world, shape, size, id, color;
-  for (const SceneObject& object : built->objects()) {
+  for (std::size_t i = 0; i < built->objects().size(); ++i) {
+    const SceneObject& object = built->objects()[i];
+    // A shader's constants must be finite (GLSL ES has no constant infinity).
+    bool finite = true;
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row) finite = finite && std::isfinite(object.world_to_object[column][row]);
+    for (int column = 0; column < 3; ++column)
+      for (int row = 0; row < 3; ++row) finite = finite && std::isfinite(object.normal_to_world[column][row]);
+    if (!finite)
+      return invalid_input("scene object #" + std::to_string(i + 1) +
+                           "'s transform has no finite inverse in single precision, which a GLSL shader needs");
     world_to_object.push_back(matrix_text("mat4", object.world_to_object, 4));
     normal_to_world.push_back(matrix_text("mat3", object.normal_to_world, 3));
     id.push_back(glsl_int(object.id));

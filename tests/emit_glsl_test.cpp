@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "render/glsl_shader.h"
+#include "render/scene_glsl.h"
 #include "glslgen/traced_ops.h"
 #include "graph/generated_names.h"
 #include "support/gallery.h"
@@ -147,6 +148,43 @@ TEST(EmitGlsl, HostileNamesAreNeverLiveCode) {
         }
     }
     EXPECT_EQ(validate(folder, "hostile", shader->source), 0) << quoted_text(name);
+  }
+}
+
+}  // namespace
+}  // namespace shadetree
+
+namespace shadetree {
+namespace {
+
+// A surface graph of one colour on `objects`, as its scene's text.
+std::string surface_on(const std::string& objects) {
+  return R"({"format": "shadetree-graph", "version": 1, "kind": "surface",
+             "nodes": [{"id": "red", "op": "vec3", "in": {"x": 1, "y": 0, "z": 0}}],
+             "outputs": {"color": "red"}, "render": {"scene": {"objects": [)" +
+         objects + "]}}}";
+}
+
+// What a shader's scene cannot hold is refused in one line naming the
+// object: too many objects to test per ray, a transform whose inverse is
+// not finite in single precision (a shader's constants must be).
+TEST(EmitGlsl, ScenesAShaderCannotHoldAreRefusedNamingTheObject) {
+  std::string many;
+  for (std::size_t i = 0; i <= max_glsl_objects; ++i)
+    many += std::string(i > 0 ? ", " : "") + R"({"type": "sphere", "transform": {"translate": [)" +
+            std::to_string(i) + ", 0, 0]}}";
+  const std::pair<std::string, std::string> scenes[] = {
+      {many, "65 objects, more than a GLSL shader tests per ray (at most 64)"},
+      {R"({"type": "plane"}, {"type": "sphere", "transform": {"scale": 1e-11, "translate": [1e30, 0, 0]}})",
+       "scene object #2's transform has no finite inverse"},
+  };
+  for (const auto& [objects, reason] : scenes) {
+    Result<LoadedGraph> loaded = compile_graph_text(surface_on(objects), "scene.json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    Result<GlslShader> shader = glsl_shader(*loaded->graph, loaded->ir, loaded->params, {"scene", false});
+    ASSERT_FALSE(shader.ok()) << reason;
+    EXPECT_NE(shader.error().message.find(reason), std::string::npos) << shader.error().to_string();
+    EXPECT_EQ(shader.error().file, "scene.json");
   }
 }
 
