@@ -60,6 +60,10 @@ const state = {
   lastExport: null,     // {url, name, type, size} of the last exported image
   checked: null,        // {key, check, whole}: the last document that checked, its params' values aside
   fileTag: null,        // the ETag of the file as last opened or saved: a save over a file changed since asks first
+  edits: 0,             // edits of the document so far
+  undrawnEdits: [],     // {edit, at}: edits no preview shows yet, with when they were made
+  latencies: [],        // {ms, gpu, structural}: from an edit to the first preview showing it (the last 1000)
+  drawTimes: [],        // when previews were drawn (the last 1000)
 };
 
 const byId = (id) => document.getElementById(id);
@@ -146,6 +150,7 @@ function takeLayout(doc) {
 // and whose previews may render coarser.
 function edited({ interactive = false } = {}) {
   if (!state.doc) return;
+  state.undrawnEdits.push({ edit: ++state.edits, at: performance.now() });
   history.touch(snapshot, { dragging: interactive });
   // Any edit of a volume is drawn coarse first and refined on a pause.
   scheduleUpdate({ interactive: interactive || state.doc.kind === "volume" });
@@ -358,11 +363,16 @@ async function checkOf(body) {
   return checks.get(key);
 }
 
+// Edits within 15 ms of the first one not yet drawn are drawn together.
+// The timer is not restarted by the next edit, so a drag whose events come
+// faster than that (a 120 Hz mouse) still draws as it goes.
 function scheduleUpdate({ interactive = false } = {}) {
   if (!state.doc) return;
   if (interactive) state.lastInteraction = performance.now();
-  clearTimeout(pending);
-  pending = setTimeout(update, 15);
+  pending ??= setTimeout(() => {
+    pending = null;
+    update();
+  }, 15);
 }
 
 // Volume previews are slow: a graph's first picture, the pictures just
@@ -383,6 +393,7 @@ function previewSide() {
 
 async function update() {
   const sequence = ++state.sequence;
+  const covers = state.edits;
   thumbnails.cancel();
   clearTimeout(refine);
   const doc = graphView.document();
@@ -396,7 +407,8 @@ async function update() {
   // document did before it, so the server is not asked again.
   let check, previewed = doc;
   const checkKey = `${state.path}\n${shaderKey(doc)}`;
-  if (state.checked?.key === checkKey) {
+  const structural = state.checked?.key !== checkKey;
+  if (!structural) {
     check = state.checked.check;
     if (!state.checked.whole) previewed = withoutUnreadNodes(doc);
   } else {
@@ -422,12 +434,13 @@ async function update() {
                                  : state.unreadError ? `No output reads ${state.unreadError.node}: ${state.unreadError.text}` : "";
   if (!check.ok) {
     setStatus(check.error.text, true);
+    recordLatency(covers, false, structural);  // the error is what the edit shows
     return;
   }
   const previewDoc = view.apply(previewed);
   const previewBody = JSON.stringify(previewDoc);
   if (gpu.accepts(previewDoc)) {
-    const drawn = await drawOnGpu(previewDoc);
+    const drawn = await drawOnGpu(previewDoc, covers, structural);
     if (sequence !== state.sequence) return;
     if (drawn) {
       if (state.playing) nextFrame();
@@ -447,7 +460,11 @@ async function update() {
       await Promise.race([inflight.done, new Promise((resolve) => setTimeout(resolve, patienceMs - age))]);
       if (sequence !== state.sequence) return;
     }
-    if (needed() && (!(await requestPreview(previewBody, side, previewKey)) || sequence !== state.sequence)) return;
+    if (needed() && (!(await requestPreview(previewBody, side, previewKey, covers, structural)) ||
+                     sequence !== state.sequence))
+      return;
+  } else {
+    recordLatency(covers, false, structural);  // the picture shown is already this one
   }
   if (state.playing) {
     nextFrame();
@@ -474,7 +491,7 @@ function showOk() {
 
 // Draws the preview on the page's GPU; false where it cannot (the server
 // draws it then) or a newer file was opened meanwhile.
-async function drawOnGpu(doc) {
+async function drawOnGpu(doc, covers, structural) {
   const started = performance.now();
   const opened = state.opened;
   let drawn = null;
@@ -491,6 +508,7 @@ async function drawOnGpu(doc) {
   state.drawnKey = null;
   state.drawnSide = previewSize;
   state.previews += 1;
+  recordLatency(covers, true, structural);
   byId("preview-info").textContent = `${previewSize}x${previewSize} in ${(performance.now() - started).toFixed(1)} ms (GPU: WebGL 2)` +
     (view.changed ? ", view moved" : "");
   byId("reset-view").disabled = !view.changed;
@@ -501,7 +519,7 @@ async function drawOnGpu(doc) {
 // Draws the preview, unless a newer one was drawn already; false if it
 // was superseded or refused. Requests of slot "main" supersede the one
 // in flight: the server stops it and answers 409.
-async function requestPreview(body, side, key) {
+async function requestPreview(body, side, key, covers, structural) {
   inflight?.controller.abort();
   const id = ++previewRequests;
   const opened = state.opened;
@@ -525,6 +543,7 @@ async function requestPreview(body, side, key) {
     state.drawnKey = key;
     state.drawnSide = side;
     drawPreview(image);
+    recordLatency(covers, false, structural);
     const took = performance.now() - started;
     // A draft that waited for a compile says little of the next one.
     if (side === previewSize) state.fullPreviewMs = took;
@@ -547,6 +566,23 @@ async function requestPreview(body, side, key) {
 }
 
 // A coarse preview is scaled up, smoothly, to the preview's size.
+// Latency from the user's hand: what every edit up to `covers` looks like
+// is shown now (a preview drawn, or a check's error, or the picture
+// already shown); the first of those edits waited this long. What the
+// browser test reports (docs/architecture.md, "From the user's hand").
+function recordLatency(covers, gpuDrawn, structural) {
+  const now = performance.now();
+  const keep = (list, entry) => {
+    list.push(entry);
+    if (list.length > 1000) list.shift();
+  };
+  keep(state.drawTimes, now);
+  const shown = state.undrawnEdits.filter((entry) => entry.edit <= covers);
+  if (shown.length === 0) return;
+  state.undrawnEdits = state.undrawnEdits.filter((entry) => entry.edit > covers);
+  keep(state.latencies, { ms: now - shown[0].at, gpu: gpuDrawn, structural });
+}
+
 function drawPreview(image) {
   const context = previewCanvas.getContext("2d");
   if (image.width === previewCanvas.width && image.height === previewCanvas.height) {

@@ -79,7 +79,8 @@ export class PreviewView {
     this.element.addEventListener("wheel", (event) => {
       if (!this.navigable) return;
       event.preventDefault();
-      const factor = Math.exp(event.deltaY * 0.0015);
+      // A wheel notch (deltaY 100) moves the camera 5% of its distance.
+      const factor = Math.exp(event.deltaY * 0.0005);
       if (this.texture) this.zoomDomain(factor, this.unitPoint(event));
       else this.dolly(factor);
       this.onChange(true);
@@ -129,14 +130,15 @@ export class PreviewView {
     this.domain = { min: add(min, shift), max: add(max, shift) };
   }
 
-  // Turn the camera about its target: left-right about its up axis,
-  // up-down about its right axis, stopping short of looking along up.
+  // Turn the camera about its target: left-right about its up axis (half
+  // a turn across the preview's width), up-down about its right axis (a
+  // quarter turn across its height), stopping short of looking along up.
   orbit(dx, dy) {
     const camera = this.currentCamera();
     const up = normalize(camera.up);
-    let offset = rotate(sub(camera.position, camera.target), up, -dx * Math.PI * 1.5);
+    let offset = rotate(sub(camera.position, camera.target), up, -dx * Math.PI);
     const right = normalize(cross(up, offset));
-    const pitched = rotate(offset, right, -dy * Math.PI);
+    const pitched = rotate(offset, right, -dy * Math.PI / 2);
     if (Math.abs(dot(normalize(pitched), up)) < 0.995) offset = pitched;
     camera.position = add(camera.target, offset);
     this.camera = camera;

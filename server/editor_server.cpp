@@ -32,7 +32,10 @@
 namespace shadetree {
 namespace {
 
-constexpr const char* token_cookie = "shadetree_token";
+// Browsers keep cookies per host, not per port: a server's cookie is
+// named after its port, so that two servers on one host do not log each
+// other's pages out.
+std::string token_cookie(int port) { return "shadetree_token_" + std::to_string(port); }
 
 std::string random_token() {
   std::random_device device;
@@ -315,7 +318,7 @@ std::optional<std::string> EditorServer::access_refusal(const httplib::Request& 
   if (token.empty()) token = request.get_header_value("X-Shadetree-Token");
   if (same_secret(token, options_.token)) return std::nullopt;
   const bool reads = request.method == "GET" || request.method == "HEAD";
-  if (reads && same_secret(cookie_value(request, token_cookie), options_.token)) return std::nullopt;
+  if (reads && same_secret(cookie_value(request, token_cookie(port_)), options_.token)) return std::nullopt;
   return reads ? "missing or wrong token: open the URL shadetree serve printed"
                : "this request needs the token in the URL or the X-Shadetree-Token header, not only the cookie";
 }
@@ -324,7 +327,7 @@ void EditorServer::add_editor_file_routes() {
   httplib::Server& http = *server_;
   http.Get("/", [this](const httplib::Request&, httplib::Response& response) {
     serve_editor_file(response, "index.html");
-    response.set_header("Set-Cookie", std::string(token_cookie) + "=" + options_.token +
+    response.set_header("Set-Cookie", token_cookie(port_) + "=" + options_.token +
                                           "; Path=/; HttpOnly; SameSite=Strict");
     response.set_header("Cache-Control", "no-store");
   });

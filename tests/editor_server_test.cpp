@@ -119,6 +119,9 @@ TEST_F(EditorServerTest, EveryRequestNeedsTheToken) {
   EXPECT_NE(cookie.find("SameSite=Strict"), std::string::npos) << cookie;
   EXPECT_NE(cookie.find("HttpOnly"), std::string::npos) << cookie;
   EXPECT_EQ(client_->Get("/api/graphs", {{"Cookie", cookie.substr(0, cookie.find(';'))}})->status, 200);
+  // Named after the port: another server's page on this host keeps its own.
+  EXPECT_EQ(cookie.rfind("shadetree_token_" + std::to_string(server_->port()) + "=", 0), 0u) << cookie;
+  EXPECT_EQ(client_->Get("/api/graphs", {{"Cookie", "shadetree_token_1=" + server_->token()}})->status, 403);
   EXPECT_NE(server_->url().find("http://127.0.0.1:" + std::to_string(server_->port()) + "/?token="),
             std::string::npos);
 }
@@ -127,7 +130,8 @@ TEST_F(EditorServerTest, EveryRequestNeedsTheToken) {
 // other local ports make, so another local page could make the server
 // compile and render. The cookie alone now only reads.
 TEST_F(EditorServerTest, TheCookieAloneCannotCompileRenderOrWrite) {
-  const httplib::Headers cookie = {{"Cookie", "shadetree_token=" + server_->token()}};
+  const httplib::Headers cookie = {
+      {"Cookie", "shadetree_token_" + std::to_string(server_->port()) + "=" + server_->token()}};
   EXPECT_EQ(client_->Get("/api/graphs", cookie)->status, 200);
   EXPECT_EQ(client_->Get("/api/graph?path=waves.json", cookie)->status, 200);
   const std::vector<std::pair<std::string, std::string>> costly = {

@@ -117,6 +117,33 @@ try {
     for (let step = 1; step <= steps; ++step) await on.mouse.move(box.x + 2 + step * 3, box.y + box.height / 2);
     await on.mouse.up();
   };
+  // A slider dragged for a second as a fast hand does, an input event each
+  // 120 Hz frame (sent in the page: puppeteer's mouse takes tens of ms a
+  // move), and what the page measured meanwhile (editor.js recordLatency):
+  // the median latency of the drag's value edits, from the edit to the
+  // preview showing it, and the previews drawn per second of the drag.
+  // Reported against the issue's goals (30 ms, 30 per second), never
+  // asserted: timings depend on the machine.
+  const timedDrag = (name, on) => on.evaluate(async (name) => {
+    const { state } = window.shadetreeEditor;
+    state.latencies = [];
+    state.drawTimes = [];
+    const slider = document.querySelector(`input[name="${name}"]`);
+    const [low, high, first] = [Number(slider.min), Number(slider.max), Number(slider.value)];
+    const started = performance.now();
+    for (let frame = 1; performance.now() - started < 1000; ++frame) {
+      slider.value = String(low + ((first - low + frame * (high - low) / 400) % (high - low)));
+      slider.dispatchEvent(new Event("input", { bubbles: true }));
+      await new Promise((resolve) => setTimeout(resolve, 8));
+    }
+    const ended = performance.now();
+    slider.dispatchEvent(new Event("change", { bubbles: true }));
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    const values = state.latencies.filter((entry) => !entry.structural).map((entry) => entry.ms).sort((a, b) => a - b);
+    const seconds = (ended - started) / 1000;
+    return { median: values[Math.floor(values.length / 2)], count: values.length,
+             perSecond: state.drawTimes.filter((at) => at >= started && at <= ended).length / seconds };
+  }, name);
   const pressKeys = async (...keys) => {
     for (const key of keys) await page.keyboard.down(key);
     for (const key of keys.reverse()) await page.keyboard.up(key);
@@ -412,6 +439,29 @@ try {
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
   console.log(`fireball.json: a slider drag drew a ${draftSide}x${draftSide} draft, refined to 256x256 on the pause`);
 
+  // Five wheel notches over the preview dolly toward the fireball without
+  // entering its bounds; "Reset view" goes back.
+  // (Dispatched on the preview, which may lie below the page's fold.)
+  await page.$eval("#preview", (element) => {
+    for (let notch = 0; notch < 5; ++notch)
+      element.dispatchEvent(new WheelEvent("wheel", { deltaY: -100, bubbles: true, cancelable: true }));
+  });
+  const cameraDistance = await page.evaluate(() => {
+    const camera = window.shadetreeEditor.view.currentCamera();
+    return Math.hypot(...camera.position.map((p, i) => p - camera.target[i]));
+  });
+  assert.ok(cameraDistance > 1.6 * Math.sqrt(3), `five notches left the camera outside the bounds (at ${cameraDistance.toFixed(2)})`);
+  await page.waitForFunction(() => !document.getElementById("reset-view").disabled, { timeout: 20000 });
+  await page.$eval("#reset-view", (button) => button.click());
+  await page.waitForFunction(() => !window.shadetreeEditor.view.changed && window.shadetreeEditor.state.drawnSide === 256 &&
+                             !document.getElementById("preview-info").textContent.includes("view moved"), { timeout: 60000 })
+    .catch(async (error) => {
+      throw new Error(`no full preview after Reset view: ${await page.evaluate(() => JSON.stringify({
+        changed: window.shadetreeEditor.view.changed, side: window.shadetreeEditor.state.drawnSide,
+        info: document.getElementById("preview-info").textContent }))} (${error})`);
+    });
+  console.log(`fireball.json: five wheel notches brought the camera from 4.2 to ${cameraDistance.toFixed(2)} of the target, outside the bounds`);
+
   // Opening a graph with a check error while the fireball's preview is on
   // its way: the fireball's picture is never drawn under the new name. The
   // preview request is held back until the other graph is open, so that
@@ -653,6 +703,7 @@ try {
   await discard;
   await page.waitForFunction(() => window.shadetreeEditor.state.path === null && window.shadetreeEditor.state.doc.nodes.length === 0);
   assert.equal(await page.$eval('select[name="graph kind"]', (field) => field.value), "texture");
+  await page.evaluate(() => { window.shadetreeEditor.state.latencies = []; });
   // The empty graph's check answers, above the fields, before they are clicked.
   await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes('"outputs" must be a non-empty object'),
                              { timeout: 5000 });
@@ -722,8 +773,14 @@ try {
 
   // Copy and paste with the wires between the copied nodes; a constant
   // typed in the node panel goes along.
-  const turbulenceTitle = await titlePoint("turbulence1");
-  await page.mouse.click(turbulenceTitle[0], turbulenceTitle[1]);
+  // (A click right after the canvas's deselecting one can land before
+  // litegraph has laid the node out again: it is clicked until selected.)
+  for (let attempt = 0; !(await page.$('input[name="turbulence1.octaves"]')); ++attempt) {
+    assert.ok(attempt < 5, "a click on turbulence1's title selects it");
+    const turbulenceTitle = await titlePoint("turbulence1");
+    await page.mouse.click(turbulenceTitle[0], turbulenceTitle[1]);
+    await page.waitForSelector('input[name="turbulence1.octaves"]', { timeout: 2000 }).catch(() => {});
+  }
   await page.click('input[name="turbulence1.octaves"]', { clickCount: 3 });
   await page.keyboard.type("3");
   await page.keyboard.press("Tab");
@@ -767,6 +824,41 @@ try {
   assert.deepEqual(await page.evaluate(() => Object.fromEntries(["P1", "turbulence1"].map((id) => [id, [...window.shadetreeEditor.viewOf(id).pos].map(Math.round)]))),
                    placesBefore, "the places survive save and reopen");
   console.log(`saved as from_nothing.json: shadetree check accepts it; P1 at ${placesBefore.P1} and turbulence1 at ${placesBefore.turbulence1} when opened again`);
+
+  // It renders as previewed: `shadetree render` of the saved file at the
+  // preview's size against the preview's pixels, both as 8-bit sRGB.
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256 &&
+                             window.shadetreeEditor.state.path === "from_nothing.json" &&
+                             document.getElementById("status").textContent.includes("from_nothing.json: ok"), { timeout: 20000 });
+  const rendered = join(folder, "from_nothing.png");
+  const render = spawnSync(binary, ["render", join(folder, "from_nothing.json"), "-o", rendered, "--size", "256x256"], { encoding: "utf8" });
+  assert.equal(render.status, 0, render.stderr);
+  const renderedPixels = await page.evaluate(async (png) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${png}`;
+    await image.decode();
+    const canvas = document.createElement("canvas");
+    canvas.width = image.width;
+    canvas.height = image.height;
+    const context = canvas.getContext("2d");
+    context.drawImage(image, 0, 0);
+    return Array.from(context.getImageData(0, 0, image.width, image.height).data);
+  }, readFileSync(rendered).toString("base64"));
+  const previewedPixels = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
+  assert.equal(renderedPixels.length, previewedPixels.length, "the render is the preview's size");
+  let renderLargest = 0;
+  for (let i = 0; i < renderedPixels.length; ++i) renderLargest = Math.max(renderLargest, Math.abs(renderedPixels[i] - previewedPixels[i]));
+  assert.ok(renderLargest <= 1, `from_nothing.json renders as previewed (largest difference ${renderLargest} of 255)`);
+  assert.ok(new Set(previewedPixels).size > 32, "the preview shows the turbulence, not a blank");
+  console.log(`from_nothing.json: shadetree render draws what the preview showed (largest difference ${renderLargest} of 255; ` +
+              `${await page.$eval("#preview-info", (element) => element.textContent)})`);
+  // Structural edits (nodes added, wired, deleted, a constant typed) of
+  // the graph made from nothing, each drawn by the server after its check
+  // and compile: reported against the issue's goal of 100 ms.
+  const structural = await page.evaluate(() => window.shadetreeEditor.state.latencies
+    .filter((entry) => entry.structural).map((entry) => entry.ms).sort((a, b) => a - b));
+  console.log(`latency from the hand, structural edits of from_nothing.json (goal: 100 ms): median ` +
+              `${structural[Math.floor(structural.length / 2)]?.toFixed(1)} ms, slowest ${structural.at(-1)?.toFixed(1)} ms over ${structural.length} edits`);
 
   // Frame all (F) brings ocean's 127 nodes into the canvas.
   await page.evaluate(() => window.shadetreeEditor.open("roundtrip/ocean.json"));
@@ -828,9 +920,11 @@ try {
     const asked = [...requests];
     const drawnByDrag = (await gpuPage.evaluate(() => window.shadetreeEditor.state.previews)) - drawnBefore;
     assert.deepEqual(asked, [], "a param drag drawn on the GPU asks the server nothing");
-    const gpuAfter = await pixels();
-    assert.notDeepEqual(gpuAfter, gpuBefore, "the GPU preview changed with the param");
+    assert.notDeepEqual(await pixels(), gpuBefore, "the GPU preview changed with the param");
     assert.match(await info(), /GPU: WebGL 2/);
+    const gpuDrag = await timedDrag("scale", gpuPage);
+    await gpuPage.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
+    const gpuAfter = await pixels();
     // The same picture from the server's JIT: the GPU box off.
     await gpuPage.click("#gpu");
     await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("CPU"), { timeout: 20000 });
@@ -840,6 +934,11 @@ try {
     assert.ok(largest <= 1, `GPU and CPU previews of marble within one level of 255 (largest difference ${largest})`);
     console.log(`marble.json on the page's GPU: a slider drag drew ${drawnByDrag} previews with no request to the server; ` +
                 `the server's preview differs by at most ${largest} of 255`);
+    // The same drag drawn by the server (the GPU box is off).
+    const cpuDrag = await timedDrag("scale", gpuPage);
+    const figure = (drag) => `median ${drag.median?.toFixed(1)} ms, ${drag.perSecond.toFixed(1)} previews/s`;
+    console.log(`latency from the hand, marble's scale dragged (goals: 30 ms, 30/s): on the page's GPU ${figure(gpuDrag)}; ` +
+                `from the server ${figure(cpuDrag)}`);
     // A volume marched by the GPU (the GLSL marcher) against the server's
     // full preview (the GPU box is off now): fireball has no shadows, so
     // both march the same samples.
