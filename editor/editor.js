@@ -440,7 +440,7 @@ async function update() {
   const previewDoc = view.apply(previewed);
   const previewBody = JSON.stringify(previewDoc);
   if (gpu.accepts(previewDoc)) {
-    const drawn = await drawOnGpu(previewDoc, covers, structural);
+    const drawn = await drawOnGpu(previewDoc, covers, structural, sequence);
     if (sequence !== state.sequence) return;
     if (drawn) {
       if (state.playing) nextFrame();
@@ -489,22 +489,33 @@ function showOk() {
             false);
 }
 
-// Draws the preview on the page's GPU; false where it cannot (the server
-// draws it then) or a newer file was opened meanwhile.
-async function drawOnGpu(doc, covers, structural) {
+// Draws the preview on the page's GPU, from drafts where it is slow;
+// false where it cannot (the server draws it then), or where a newer edit
+// or file came meanwhile.
+async function drawOnGpu(doc, covers, structural, sequence) {
   const started = performance.now();
   const opened = state.opened;
+  const stale = () => sequence !== state.sequence || opened !== state.opened;
+  const show = (canvas) => {
+    inflight?.controller.abort();  // a server preview under way would draw over this one
+    const context = previewCanvas.getContext("2d");
+    context.clearRect(0, 0, previewCanvas.width, previewCanvas.height);
+    context.drawImage(canvas, 0, 0, previewCanvas.width, previewCanvas.height);
+  };
   let drawn = null;
   try {
-    drawn = await gpu.draw(doc, previewSize, state.frame, pathQuery());
+    drawn = await gpu.draw(doc, previewSize, state.frame, pathQuery(), {
+      stale,
+      show: (canvas) => {
+        show(canvas);
+        byId("preview-info").textContent = `${canvas.width}x${canvas.height} draft, refining (GPU: WebGL 2)`;
+      },
+    });
   } catch (error) {
     gpu.error = String(error);
   }
-  if (!drawn || opened !== state.opened) return false;
-  inflight?.controller.abort();  // a server preview under way would draw over this one
-  const context = previewCanvas.getContext("2d");
-  context.clearRect(0, 0, previewCanvas.width, previewCanvas.height);
-  context.drawImage(drawn, 0, 0, previewCanvas.width, previewCanvas.height);
+  if (!drawn || stale()) return false;
+  show(drawn);
   state.drawnKey = null;
   state.drawnSide = previewSize;
   state.previews += 1;
@@ -725,8 +736,7 @@ async function open(path) {
   const check = await checked.json();
   if (!check.ok && !check.parsed) return refuse(check.error.message);
   if (attempt !== opening) return;
-  await showDocument(path, doc, text);
-  state.fileTag = response.headers.get("ETag");
+  await showDocument(path, doc, text, response.headers.get("ETag"));
 }
 
 // A new graph of `kind`, with no nodes and no file until saved as one.
@@ -737,8 +747,10 @@ async function newGraph(kind) {
   await showDocument(null, doc, null);
 }
 
-// `doc`, read from `text` of file `path` (null: new), becomes the document.
-async function showDocument(path, doc, text) {
+// `doc`, read from `text` of file `path` (null: new) whose ETag is `tag`,
+// becomes the document. The path and its tag change together, before
+// anything is awaited: a save made meanwhile keeps the tag it got.
+async function showDocument(path, doc, text, tag = null) {
   setPlaying(false);
   state.opened += 1;
   inflight?.controller.abort();
@@ -747,7 +759,7 @@ async function showDocument(path, doc, text) {
   graphView.loadLayout(doc.layout);
   state.doc = takeLayout(doc);
   state.fileText = text;
-  state.fileTag = null;
+  state.fileTag = tag;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;

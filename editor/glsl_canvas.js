@@ -65,9 +65,9 @@ export class GlslCanvas {
     }
   }
 
-  // Draws a width x height image of frame `frame` to the canvas, or, with
-  // `floats`, to a float target whose pixels it returns (rows from the
-  // top, RGBA).
+  // Draws a width x height image of frame `frame` to the canvas (and waits
+  // until the GPU has drawn it), or, with `floats`, to a float target whose
+  // pixels it returns (rows from the top, RGBA).
   draw(width, height, frame = 0, { floats = false } = {}) {
     const gl = this.gl;
     gl.useProgram(this.program);
@@ -79,7 +79,7 @@ export class GlslCanvas {
       target = gl.createFramebuffer();
       gl.bindFramebuffer(gl.FRAMEBUFFER, target);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-    } else {
+    } else if (gl.canvas.width !== width || gl.canvas.height !== height) {
       gl.canvas.width = width;
       gl.canvas.height = height;
     }
@@ -87,7 +87,10 @@ export class GlslCanvas {
     gl.uniform2f(gl.getUniformLocation(this.program, "st_resolution"), width, height);
     gl.uniform1f(gl.getUniformLocation(this.program, "st_frame"), frame);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
-    if (!floats) return null;
+    if (!floats) {
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));  // done drawing
+      return null;
+    }
     const bottomUp = new Float32Array(width * height * 4);
     gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, bottomUp);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);

@@ -84,6 +84,9 @@ try {
   await page.setViewport({ width: 1280, height: 760 });
   const errors = [];
   page.on("pageerror", (error) => errors.push(String(error)));
+  // Every dialog is logged: one the test does not answer blocks the page
+  // (a spurious "changed on disk" did, once).
+  page.on("dialog", (dialog) => console.log(`dialog ${dialog.type()}: ${dialog.message()}`));
   await page.goto(url);
   await page.waitForFunction(() => window.shadetreeEditor && window.shadetreeEditor.state.previews > 0, { timeout: 20000 });
   await page.evaluate(() => {
@@ -163,7 +166,10 @@ try {
   const saveWithKeys = async (path) => {
     await watchStatus();
     await pressKeys("Control", "s");
-    await page.waitForFunction((path) => window.statusesShown.includes(`saved ${path}`), { timeout: 20000 }, path);
+    await page.waitForFunction((path) => window.statusesShown.includes(`saved ${path}`), { timeout: 20000 }, path)
+      .catch(async (error) => {
+        throw new Error(`no "saved ${path}" among the statuses ${JSON.stringify(await page.evaluate(() => window.statusesShown))} (${error})`);
+      });
     return readFileSync(join(folder, path), "utf8");
   };
   const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
@@ -905,7 +911,7 @@ try {
       await window.shadetreeEditor.ready;
       await window.shadetreeEditor.open("marble.json");
     });
-    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("GPU"), { timeout: 20000 })
+    await gpuPage.waitForFunction(() => /in [0-9.]+ ms \(GPU: WebGL 2\)/.test(document.getElementById("preview-info").textContent), { timeout: 20000 })
       .catch(async (error) => { throw new Error(`no GPU preview of marble.json: ${await info()} (${error})`); });
     await gpuPage.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0 && window.shadetreeEditor.graphView.thumbnailsDrawn > 0,
                                   { timeout: 20000 });
@@ -942,6 +948,10 @@ try {
     // A volume marched by the GPU (the GLSL marcher) against the server's
     // full preview (the GPU box is off now): fireball has no shadows, so
     // both march the same samples.
+    // SwiftShader marches on the CPU, slower than the server does: the
+    // page would leave the fireball to the server (below), unless told to
+    // wait for its GPU however long it takes.
+    await gpuPage.evaluate(() => { window.shadetreeEditor.gpu.longestDrawMs = Infinity; });
     const previewsBeforeFireball = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
     await gpuPage.evaluate(() => window.shadetreeEditor.open("fireball.json"));
     // Its first picture is a draft, then the full one.
@@ -954,7 +964,7 @@ try {
       .catch(async (error) => { throw new Error(`no full CPU preview of fireball.json: ${await info()} (${error})`); });
     const fireballCpu = await pixels();
     await gpuPage.click("#gpu");
-    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("GPU"), { timeout: 60000 })
+    await gpuPage.waitForFunction(() => /in [0-9.]+ ms \(GPU: WebGL 2\)/.test(document.getElementById("preview-info").textContent), { timeout: 60000 })
       .catch(async (error) => { throw new Error(`no GPU preview of fireball.json: ${await info()} (${error})`); });
     const fireballGpu = await pixels();
     let fireballLargest = 0, fireballSum = 0;
@@ -967,6 +977,28 @@ try {
     assert.ok(new Set(fireballGpu).size > 64, "the fireball is drawn, not a blank");
     console.log(`fireball.json on the page's GPU: differs from the server's by at most ${fireballLargest} of 255 ` +
                 `(mean ${(fireballSum / fireballCpu.length).toFixed(4)}); ${await info()}`);
+    // A slow shader is refined from drafts, each shown as it comes (forced
+    // here by a budget of 0 ms): the same picture in the end.
+    const redrawOnGpu = async () => {
+      await gpuPage.click("#gpu");
+      await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("CPU"), { timeout: 60000 });
+      await gpuPage.click("#gpu");
+    };
+    await gpuPage.evaluate(() => { window.shadetreeEditor.gpu.budgetMs = 0; });
+    await redrawOnGpu();
+    await gpuPage.waitForFunction(() => /in [0-9.]+ ms \(GPU: WebGL 2\)/.test(document.getElementById("preview-info").textContent), { timeout: 60000 });
+    const sides = await gpuPage.evaluate(() => window.shadetreeEditor.gpu.sides);
+    assert.deepEqual(sides, [32, 64, 128, 256], "refined from a 32x32 draft");
+    assert.deepEqual(await pixels(), fireballGpu, "the refinement ends with the same picture");
+    // One the page's GPU would take too long to draw is left to the server
+    // (forced here by a longest draw of 0 ms), which says why.
+    await gpuPage.evaluate(() => Object.assign(window.shadetreeEditor.gpu, { longestDrawMs: 0 }));
+    await redrawOnGpu();
+    await gpuPage.waitForFunction(() => document.getElementById("preview-info").textContent.includes("would take about"), { timeout: 60000 })
+      .catch(async (error) => { throw new Error(`no server preview of a slow shader: ${await info()} (${error})`); });
+    assert.match(await info(), /CPU/);
+    console.log(`fireball.json: refined by the page's GPU from drafts of ${sides.join(", ")} to the same pixels; a shader too slow for the GPU ` +
+                `is drawn by the server: ${await info()}`);
   } finally {
     await Promise.race([gpuBrowser.close(), new Promise((resolve) => setTimeout(resolve, 3000))]);
     gpuBrowser.process()?.kill("SIGKILL");
