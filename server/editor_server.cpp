@@ -145,6 +145,30 @@ std::string rgba_bytes(const Image& image) {
   return bytes;
 }
 
+// A node's thumbnail shows its values' shape whatever their range (a
+// noise in [-1, 1], a product reaching 4): where they leave [0, 1], the
+// range [min(0, lowest), max(1, highest)] of its colour channels is mapped
+// onto [0, 1]. Values within [0, 1] stay as they are. The range mapped.
+std::pair<float, float> show_thumbnail_range(Image& image) {
+  float lowest = 0.0f, highest = 1.0f;
+  const int colours = std::min(image.channels, 3);
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (int c = 0; c < colours; ++c) {
+      const float value = image.pixels[i * image.channels + c];
+      if (!std::isfinite(value)) continue;
+      lowest = std::min(lowest, value);
+      highest = std::max(highest, value);
+    }
+  if (lowest < 0.0f || highest > 1.0f)
+    for (std::size_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < colours; ++c) {
+        float& value = image.pixels[i * image.channels + c];
+        value = (value - lowest) / (highest - lowest);
+      }
+  return {lowest, highest};
+}
+
 // A graph file's HTTP entity tag: a digest of its text, enough to tell
 // that another program changed the file (not a defence against anyone).
 std::string entity_tag(const std::string& text) {
@@ -455,6 +479,10 @@ void EditorServer::add_render_routes() {
     std::optional<Rendered> rendered = render_body(request, response, options_.max_preview_side);
     if (!rendered) return;
     ++previews_;
+    if (request.has_param("node")) {
+      const auto [lowest, highest] = show_thumbnail_range(rendered->image);
+      response.set_header("X-Range", std::to_string(lowest) + " " + std::to_string(highest));
+    }
     response.set_content(rgba_bytes(rendered->image), "application/octet-stream");
     response.set_header("X-Width", std::to_string(rendered->image.width));
     response.set_header("X-Height", std::to_string(rendered->image.height));

@@ -460,6 +460,28 @@ TEST_F(EditorServerTest, NodeThumbnailsShowOneNodesValue) {
     const unsigned char value = static_cast<unsigned char>(flag->body[i]);
     EXPECT_TRUE(value == 0 || value == 255) << "a bool is black or white";
   }
+  // Values beyond [0, 1] are mapped into it, with the range in X-Range:
+  // u * 4 at the pixel centres is 0.5, 1.5, 2.5, 3.5; u - 0.5 is -0.375
+  // to 0.375.
+  const std::string ranged_graph = R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+    "nodes": [{"id": "t", "op": "uv"}, {"id": "parts", "op": "split", "in": {"v": "t"}},
+              {"id": "four", "op": "mul", "in": {"a": "parts.x", "b": 4}},
+              {"id": "centred", "op": "sub", "in": {"a": "parts.x", "b": 0.5}}],
+    "outputs": {"color": "four"}})";
+  auto four = client_->Post("/api/preview?path=waves.json&width=4&height=1&node=four", headers_, ranged_graph,
+                            "application/json");
+  ASSERT_EQ(four->status, 200) << four->body;
+  EXPECT_EQ(four->get_header_value("X-Range"), "0.000000 3.500000");
+  const float fours[] = {0.5f, 1.5f, 2.5f, 3.5f};
+  for (int x = 0; x < 4; ++x)
+    EXPECT_EQ(static_cast<unsigned char>(four->body[x * 4]), static_cast<int>(fours[x] / 3.5f * 255.0f + 0.5f)) << x;
+  auto centred = client_->Post("/api/preview?path=waves.json&width=4&height=1&node=centred", headers_, ranged_graph,
+                               "application/json");
+  ASSERT_EQ(centred->status, 200) << centred->body;
+  EXPECT_EQ(centred->get_header_value("X-Range"), "-0.375000 1.000000");
+  EXPECT_EQ(static_cast<unsigned char>(centred->body[0]), 0);
+  EXPECT_EQ(static_cast<unsigned char>(centred->body[3 * 4]), static_cast<int>(0.75f / 1.375f * 255.0f + 0.5f));
+  EXPECT_EQ(uv->get_header_value("X-Range"), "0.000000 1.000000") << "within [0, 1]: as it is";
   // A function's node, at the function's first call: d = u / 2.
   const std::string function_graph = R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
     "functions": {"half": {"inputs": {"s": "float"}, "nodes": [{"id": "d", "op": "mul", "in": {"a": "$s", "b": 0.5}}],
