@@ -60,6 +60,7 @@ const state = {
   lastExport: null,     // {url, name, type, size} of the last exported image
   checked: null,        // {key, check, whole}: the last document that checked, its params' values aside
   fileTag: null,        // the ETag of the file as last opened or saved: a save over a file changed since asks first
+  previewNode: null,    // {id, scope}: the node whose value the preview shows instead of the outputs
   edits: 0,             // edits of the document so far
   undrawnEdits: [],     // {edit, at}: edits no preview shows yet, with when they were made
   latencies: [],        // {ms, gpu, structural}: from an edit to the first preview showing it (the last 1000)
@@ -82,6 +83,9 @@ const graphView = new GraphView(byId("graph-canvas"), {
   },
   thumbnailOf: (id) => thumbnails.cache.get(thumbnailCacheKey(id)),
   nodeMenu: (v) => [
+    state.previewNode?.id === v.shadetreeId && state.previewNode.scope === state.scope
+      ? { content: "Show the outputs in the preview", callback: () => previewNode(null) }
+      : { content: "Show in the preview", callback: () => previewNode({ id: v.shadetreeId, scope: state.scope }) },
     { content: "Duplicate (Ctrl+D)", callback: () => duplicate() },
     { content: "Copy (Ctrl+C)", callback: () => copy() },
     ...(state.doc.functions?.[v.op] ? [{ content: `Edit ${v.op}`, callback: () => showScope(v.op) }] : []),
@@ -439,7 +443,8 @@ async function update() {
   }
   const previewDoc = view.apply(previewed);
   const previewBody = JSON.stringify(previewDoc);
-  if (gpu.accepts(previewDoc)) {
+  const probe = nodeProbeQuery(previewed);
+  if (!probe && gpu.accepts(previewDoc)) {
     const drawn = await drawOnGpu(previewDoc, covers, structural, sequence);
     if (sequence !== state.sequence) return;
     if (drawn) {
@@ -448,8 +453,8 @@ async function update() {
       return;
     }
   }
-  const side = previewSide();
-  const previewKey = `${side} ${state.frame}\n${previewBody}`;
+  const side = probe ? previewSize : previewSide();
+  const previewKey = `${side} ${state.frame}${probe}\n${previewBody}`;
   // Unless this very picture is shown and no other is on its way.
   const needed = () => inflight || previewKey !== state.drawnKey;
   if (needed()) {
@@ -460,7 +465,7 @@ async function update() {
       await Promise.race([inflight.done, new Promise((resolve) => setTimeout(resolve, patienceMs - age))]);
       if (sequence !== state.sequence) return;
     }
-    if (needed() && (!(await requestPreview(previewBody, side, previewKey, covers, structural)) ||
+    if (needed() && (!(await requestPreview(previewBody, side, previewKey, covers, structural, probe)) ||
                      sequence !== state.sequence))
       return;
   } else {
@@ -530,7 +535,7 @@ async function drawOnGpu(doc, covers, structural, sequence) {
 // Draws the preview, unless a newer one was drawn already; false if it
 // was superseded or refused. Requests of slot "main" supersede the one
 // in flight: the server stops it and answers 409.
-async function requestPreview(body, side, key, covers, structural) {
+async function requestPreview(body, side, key, covers, structural, probe = "") {
   inflight?.controller.abort();
   const id = ++previewRequests;
   const opened = state.opened;
@@ -540,7 +545,7 @@ async function requestPreview(body, side, key, covers, structural) {
   const started = inflight.started;
   try {
     const draft = side < previewSize ? "&draft=1" : "";
-    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main${draft}`,
+    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main${draft}${probe}`,
                                body, controller.signal);
     if (response.status === 409) return false;
     if (!response.ok) {
@@ -563,7 +568,8 @@ async function requestPreview(body, side, key, covers, structural) {
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
     const gpuRefusal = gpu.enabled && gpuKinds.includes(state.doc.kind) && gpu.error ? `; GPU: ${gpu.error}` : "";
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (CPU, kernel: ${response.headers.get("X-Kernel")}${gpuRefusal})` +
-      (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "");
+      (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "") +
+      (probe ? `, node "${state.previewNode.id}"${state.previewNode.scope ? ` of ${state.previewNode.scope}` : ""}` : "");
     byId("reset-view").disabled = !view.changed;
     showOk();
     return true;
@@ -577,6 +583,27 @@ async function requestPreview(body, side, key, covers, structural) {
 }
 
 // A coarse preview is scaled up, smoothly, to the preview's size.
+// The preview shows `node` ({id, scope}) instead of the outputs, or the
+// outputs again (null); drawn by the server, as its thumbnail is.
+function previewNode(node) {
+  state.previewNode = node;
+  state.drawnKey = null;
+  scheduleUpdate();
+}
+
+// "&node=ID[&function=SCOPE]" of the node the preview shows, if it is
+// still in `doc`; else "" (and the preview shows the outputs again).
+function nodeProbeQuery(doc) {
+  const node = state.previewNode;
+  if (!node) return "";
+  const nodes = node.scope ? doc.functions?.[node.scope]?.nodes : doc.nodes;
+  if (!nodes?.some((n) => n.id === node.id)) {
+    state.previewNode = null;
+    return "";
+  }
+  return `&node=${encodeURIComponent(node.id)}` + (node.scope ? `&function=${encodeURIComponent(node.scope)}` : "");
+}
+
 // Latency from the user's hand: what every edit up to `covers` looks like
 // is shown now (a preview drawn, or a check's error, or the picture
 // already shown); the first of those edits waited this long. What the
@@ -760,6 +787,7 @@ async function showDocument(path, doc, text, tag = null) {
   state.doc = takeLayout(doc);
   state.fileText = text;
   state.fileTag = tag;
+  state.previewNode = null;
   state.scope = null;
   state.frame = state.doc.render?.frame ?? 0;
   state.drawnKey = null;

@@ -674,10 +674,38 @@ try {
              canvas: canvas.getCanvasMenuOptions().map((item) => item?.content).filter(Boolean),
              functions: Object.keys(LiteGraph.registered_node_types).filter((type) => type.startsWith("functions/")) };
   });
-  assert.deepEqual(menus.node, ["Duplicate (Ctrl+D)", "Copy (Ctrl+C)", "Remove"]);
+  assert.deepEqual(menus.node, ["Show in the preview", "Duplicate (Ctrl+D)", "Copy (Ctrl+C)", "Remove"]);
   assert.deepEqual(menus.canvas, ["Add Node", "Paste (Ctrl+V)", "Select all (Ctrl+A)", "Frame all (F)"]);
   assert.deepEqual(menus.functions, [], "marble's function marble_color is not offered in spline_probe.json");
   console.log(`menus: a node's ${menus.node.join(", ")}; the canvas's ${menus.canvas.join(", ")}`);
+
+  // Any node's value in the big preview, from its menu, and the outputs
+  // again: the node's picture is its thumbnail's at the preview's size.
+  const menuChoice = (id, content) => page.evaluate((id, content) => {
+    const { canvas, viewOf } = window.shadetreeEditor;
+    canvas.getNodeMenuOptions(viewOf(id)).find((item) => item?.content === content).callback();
+  }, id, content);
+  const outputsPicture = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
+  await menuChoice("st", "Show in the preview");
+  await page.waitForFunction(() => / in [0-9.]+ ms.*node "st"/.test(document.getElementById("preview-info").textContent), { timeout: 20000 });
+  const nodePicture = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
+  assert.notDeepEqual(nodePicture, outputsPicture, "the node's value, not the outputs, in the preview");
+  // uv: red grows to the right, green upward.
+  const at = (x, y, c) => nodePicture[(y * 256 + x) * 4 + c];
+  assert.ok(at(250, 128, 0) > 240 && at(5, 128, 0) < 15 && at(128, 5, 1) > 240 && at(128, 250, 1) < 15,
+            "the preview shows uv's red and green ramps");
+  assert.deepEqual((await page.evaluate(() => window.shadetreeEditor.canvas.getNodeMenuOptions(window.shadetreeEditor.viewOf("st"))
+    .map((item) => item?.content)))[0], "Show the outputs in the preview");
+  await menuChoice("st", "Show the outputs in the preview");
+  await page.waitForFunction(() => {
+    const text = document.getElementById("preview-info").textContent;
+    return / in [0-9.]+ ms/.test(text) && !text.includes("node ");
+  }, { timeout: 20000 });
+  // (Drawn by the page's GPU or, where it was too slow, the server: one
+  // level of 255 apart at most.)
+  const outputsAgain = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
+  assert.ok(outputsAgain.every((value, i) => Math.abs(value - outputsPicture[i]) <= 1), "and the outputs again");
+  console.log("spline_probe.json: node st (uv) shown in the preview from its menu, then the outputs again");
 
   // A graph from nothing, with the page's controls and keys only.
   const slotPoint = async (id, input, name) => {
@@ -907,8 +935,13 @@ try {
     const info = () => gpuPage.$eval("#preview-info", (element) => element.textContent);
     const pixels = () => gpuPage.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
     await gpuPage.goto(url);
+    // SwiftShader draws on the CPU, slower than the server marches a
+    // volume and, on a loaded machine, than the page would wait for: the
+    // page is told to wait for its GPU however long it takes, except where
+    // the test makes it give up (below).
     await gpuPage.evaluate(async () => {
       await window.shadetreeEditor.ready;
+      window.shadetreeEditor.gpu.longestDrawMs = Infinity;
       await window.shadetreeEditor.open("marble.json");
     });
     await gpuPage.waitForFunction(() => /in [0-9.]+ ms \(GPU: WebGL 2\)/.test(document.getElementById("preview-info").textContent), { timeout: 20000 })
@@ -948,10 +981,6 @@ try {
     // A volume marched by the GPU (the GLSL marcher) against the server's
     // full preview (the GPU box is off now): fireball has no shadows, so
     // both march the same samples.
-    // SwiftShader marches on the CPU, slower than the server does: the
-    // page would leave the fireball to the server (below), unless told to
-    // wait for its GPU however long it takes.
-    await gpuPage.evaluate(() => { window.shadetreeEditor.gpu.longestDrawMs = Infinity; });
     const previewsBeforeFireball = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
     await gpuPage.evaluate(() => window.shadetreeEditor.open("fireball.json"));
     // Its first picture is a draft, then the full one.
