@@ -17,11 +17,9 @@ using lanes::glsl_int;
 // The shape codes of st_object_shape.
 constexpr int shape_sphere = 0, shape_torus = 1, shape_plane = 2, shape_box = 3;
 
-std::string vec3_text(float x, float y, float z) {
-  return "vec3(" + glsl_float(x) + ", " + glsl_float(y) + ", " + glsl_float(z) + ")";
-}
-std::string vec3_text(const std::array<float, 3>& v) { return vec3_text(v[0], v[1], v[2]); }
-std::string vec3_text(const glm::vec3& v) { return vec3_text(v.x, v.y, v.z); }
+std::string vec3_text(float x, float y, float z) { return glsl_vec3({x, y, z}); }
+std::string vec3_text(const std::array<float, 3>& v) { return glsl_vec3(v); }
+std::string vec3_text(const glm::vec3& v) { return glsl_vec3({v.x, v.y, v.z}); }
 
 template <class Matrix>
 std::string matrix_text(const char* type, const Matrix& matrix, int size) {
@@ -272,6 +270,10 @@ vec3 st_light_point(vec3 color, float specular, float roughness, vec3 emission, 
 )";
 
 }  // namespace
+
+std::string glsl_vec3(const std::array<float, 3>& v) {
+  return "vec3(" + glsl_float(v[0]) + ", " + glsl_float(v[1]) + ", " + glsl_float(v[2]) + ")";
+}
 
 Result<std::string> scene_glsl(const SceneDesc& scene) {
   if (!scene.environment.empty())

@@ -18,6 +18,7 @@
 // st_normal_to_world, st_object_id and st_object_color.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "graph/diagnostic.h"
@@ -27,6 +28,9 @@ namespace shadetree {
 
 // Objects a shader's scene may hold: each ray tests them all in a loop.
 inline constexpr std::size_t max_glsl_objects = 64;
+
+// "vec3(x, y, z)", each a GLSL float literal.
+std::string glsl_vec3(const std::array<float, 3>& v);
 
 // Refused in one line: a mesh or a surface of revolution (no GLSL
 // intersector), an environment behind the scene, more than

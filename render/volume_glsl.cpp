@@ -208,10 +208,6 @@ std::string sampler(const GlslFunction& function) {
   return out.str();
 }
 
-std::string vec3_text(const std::array<float, 3>& v) {
-  return "vec3(" + glsl_float(v[0]) + ", " + glsl_float(v[1]) + ", " + glsl_float(v[2]) + ")";
-}
-
 }  // namespace
 
 Result<GlslDriver> volume_glsl(const Graph& graph, const GlslFunction& function) {
@@ -231,8 +227,8 @@ Result<GlslDriver> volume_glsl(const Graph& graph, const GlslFunction& function)
   const float samples = 8.0f * (std::ceil(glm::length(diagonal) / march_step(volume)) + 2.0f);
   std::ostringstream out;
   out << *scene_text << "\n// The volume (render.volume) and the march.\n"
-      << "const vec3 st_bounds_min = " << vec3_text(volume.bounds_min) << ";\n"
-      << "const vec3 st_bounds_max = " << vec3_text(volume.bounds_max) << ";\n"
+      << "const vec3 st_bounds_min = " << glsl_vec3(volume.bounds_min) << ";\n"
+      << "const vec3 st_bounds_max = " << glsl_vec3(volume.bounds_max) << ";\n"
       << "const float st_step = " << glsl_float(march_step(volume)) << ";\n"
       << "const float st_reference_step = " << glsl_float(reference_step(volume)) << ";\n"
       << "const float st_shadow_step = " << glsl_float(reference_step(volume)) << ";\n"
