@@ -582,7 +582,6 @@ async function requestPreview(body, side, key, covers, structural, probe = "") {
   }
 }
 
-// A coarse preview is scaled up, smoothly, to the preview's size.
 // The preview shows `node` ({id, scope}) instead of the outputs, or the
 // outputs again (null); drawn by the server, as its thumbnail is.
 function previewNode(node) {
@@ -621,6 +620,7 @@ function recordLatency(covers, gpuDrawn, structural) {
   keep(state.latencies, { ms: now - shown[0].at, gpu: gpuDrawn, structural });
 }
 
+// A coarse preview is scaled up, smoothly, to the preview's size.
 function drawPreview(image) {
   const context = previewCanvas.getContext("2d");
   if (image.width === previewCanvas.width && image.height === previewCanvas.height) {

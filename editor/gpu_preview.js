@@ -25,7 +25,6 @@ function uniformValues(doc, uniform) {
   return Array.from({ length: uniform.components }, (_, c) => Number(values[Math.min(c, values.length - 1)] ?? 0));
 }
 
-
 export class GpuPreview {
   constructor() {
     this.canvas = GlslCanvas.create(document.createElement("canvas"));

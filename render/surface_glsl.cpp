@@ -64,7 +64,6 @@ std::string shading(const GlslFunction& function) {
       << "  float st_surface = float(st_object_id[hit.object]);\n"
       << "  float st_filter_width = st_footprint(hit, pixel, size);\n"
       << "  vec3 st_light_color = st_lights > 0 ? st_light_radiance[0] : vec3(0.0);\n"
-      << "  float st_density = 0.0;\n"
       << function.output_declarations("  ") << "  " << function.call(argument) << "\n"
       << "  vec3 result = out_color;\n"
       << "  if (st_lighting) {\n"

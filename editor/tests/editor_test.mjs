@@ -685,6 +685,12 @@ try {
     const { canvas, viewOf } = window.shadetreeEditor;
     canvas.getNodeMenuOptions(viewOf(id)).find((item) => item?.content === content).callback();
   }, id, content);
+  // The outputs' picture once every edit so far is drawn.
+  const outputsDrawn = () => page.waitForFunction(() => {
+    const text = document.getElementById("preview-info").textContent;
+    return window.shadetreeEditor.state.undrawnEdits.length === 0 && / in [0-9.]+ ms/.test(text) && !text.includes("node ");
+  }, { timeout: 20000 });
+  await outputsDrawn();
   const outputsPicture = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
   await menuChoice("st", "Show in the preview");
   await page.waitForFunction(() => / in [0-9.]+ ms.*node "st"/.test(document.getElementById("preview-info").textContent), { timeout: 20000 });
@@ -697,10 +703,7 @@ try {
   assert.deepEqual((await page.evaluate(() => window.shadetreeEditor.canvas.getNodeMenuOptions(window.shadetreeEditor.viewOf("st"))
     .map((item) => item?.content)))[0], "Show the outputs in the preview");
   await menuChoice("st", "Show the outputs in the preview");
-  await page.waitForFunction(() => {
-    const text = document.getElementById("preview-info").textContent;
-    return / in [0-9.]+ ms/.test(text) && !text.includes("node ");
-  }, { timeout: 20000 });
+  await outputsDrawn();
   // (Drawn by the page's GPU or, where it was too slow, the server: one
   // level of 255 apart at most.)
   const outputsAgain = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
