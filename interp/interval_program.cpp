@@ -81,9 +81,17 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
       case IrOpKind::partials:
         for (int c = 0; c < components; ++c) *out[c] = lanes::everything();
         break;
-      case IrOpKind::begin_region:
+      case IrOpKind::begin_region: {
+        // A region that no sample of the box takes is passed over: the
+        // `if` that joins it takes the other side where its condition is
+        // certain, as it then is.
+        const lanes::IntervalMask condition = frame::loaded(*in_planes_[i * max_op_args * 3]);
+        if (!(instr.immediate[0] == 0 ? condition.may_hold : condition.may_fail))
+          i = static_cast<std::size_t>(instr.immediate[1]);
+        break;
+      }
       case IrOpKind::end_region:
-        break;  // both branches are evaluated; the joining `if` takes the hull
+        break;
     }
   }
 }

@@ -4,9 +4,10 @@
 // interp/interval_kernels.h). The volume ray marcher is meant to skip
 // bricks whose density's upper bound is <= 0.
 //
-// Conditional regions are not narrowed: both branches are evaluated over
-// the whole box, and the `if` that joins them takes their hull where its
-// condition is uncertain. An enclosure with a NaN or infinite endpoint is
+// A conditional region is evaluated over the whole box unless no sample
+// of the box takes it, when it is passed over; where its condition is
+// uncertain both branches are evaluated, and the `if` that joins them
+// takes their hull. An enclosure with a NaN or infinite endpoint is
 // returned as [-inf, +inf] (nothing is known there).
 //
 // As with kernels, an IntervalProgram is shared and a binding belongs to

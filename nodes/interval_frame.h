@@ -25,6 +25,14 @@ struct IntervalFrame : FrameConstants {
 
   lanes::Interval in(int a, int c = 0) const { return *in_planes[3 * a + c]; }
   lanes::Interval& out(int c = 0) const { return *out_planes[c]; }
+
+  // Whether every component of the first `args` arguments is finite.
+  bool finite_inputs(int args) const {
+    for (int a = 0; a < args; ++a)
+      for (int c = 0; c < arg_components(a); ++c)
+        if (!lanes::is_finite(in(a, c))) return false;
+    return true;
+  }
 };
 
 }  // namespace shadetree

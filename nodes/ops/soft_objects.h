@@ -4,9 +4,11 @@
 // nodes/semantics/soft_objects.h.
 #pragma once
 
+#include "nodes/interval_frame.h"
 #include "nodes/op_definition.h"
 #include "nodes/op_frame.h"
 #include "nodes/ops/arithmetic.h"
+#include "nodes/semantics/shape_intervals.h"
 #include "nodes/semantics/soft_objects.h"
 
 namespace shadetree::ops {
@@ -69,6 +71,14 @@ struct closest_on_sphere {
   static void evaluate(const X& x) {
     frame::store_vec3(x, sem::closest_on_sphere(frame::vec3(x, 0), frame::vec3(x, 1), x.in(2)));
   }
+  // Within the sphere's bounding box, however loose the generic form is
+  // where p nears the centre (its direction there is any).
+  static void evaluate_interval(const IntervalFrame& x) {
+    evaluate(x);
+    if (!x.finite_inputs(3)) return;
+    const float radius = std::max(std::fabs(x.in(2).lo), std::fabs(x.in(2).hi));
+    for (int c = 0; c < 3; ++c) x.out(c) = lanes::within_reach(x.out(c), x.in(1, c), 1.25f * radius);
+  }
 };
 
 struct closest_on_torus {
@@ -82,6 +92,14 @@ struct closest_on_torus {
   template <class X>
   static void evaluate(const X& x) {
     frame::store_vec3(x, sem::closest_on_torus(frame::vec3(x, 0), frame::vec3(x, 1), x.in(2), x.in(3)));
+  }
+  // Within the torus's bounding box, as closest_on_sphere.
+  static void evaluate_interval(const IntervalFrame& x) {
+    evaluate(x);
+    if (!x.finite_inputs(4)) return;
+    const auto magnitude = [](lanes::Interval r) { return std::max(std::fabs(r.lo), std::fabs(r.hi)); };
+    const float minor = magnitude(x.in(3)), across = magnitude(x.in(2)) + minor;
+    for (int c = 0; c < 3; ++c) x.out(c) = lanes::within_reach(x.out(c), x.in(1, c), 1.25f * (c < 2 ? across : minor));
   }
 };
 

@@ -4,8 +4,10 @@
 // nodes/semantics/splines.h.
 #pragma once
 
+#include "nodes/interval_frame.h"
 #include "nodes/op_definition.h"
 #include "nodes/op_frame.h"
+#include "nodes/semantics/shape_intervals.h"
 #include "nodes/semantics/splines.h"
 
 namespace shadetree::ops {
@@ -43,6 +45,13 @@ struct spline {
     const auto basis = static_cast<sem::SplineBasis>(x.immediate(1));
     frame::for_components(components, [&](int c) {
       x.out(c) = sem::spline(x.data(), x.data_count() / components, components, c, basis, x.in(0));
+    });
+  }
+  static void evaluate_interval(const IntervalFrame& x) {
+    const int components = x.immediate(0);
+    const auto basis = static_cast<sem::SplineBasis>(x.immediate(1));
+    frame::for_components(components, [&](int c) {
+      x.out(c) = lanes::spline_range(x.data(), x.data_count() / components, components, c, basis, x.in(0));
     });
   }
 };
@@ -108,6 +117,11 @@ struct table1d {
   static void evaluate(const X& x) {
     x.out() = sem::table1d(x.data(), x.immediate(0), x.in(0));
   }
+  static void evaluate_interval(const IntervalFrame& x) {
+    const float lo = x.data()[0], hi = x.data()[1];
+    x.out() = lanes::spline_range(x.data() + 2, x.immediate(0), 1, 0, sem::SplineBasis::linear,
+                                  (x.in(0) - lo) / (lanes::Interval(hi) - lo));
+  }
 };
 
 // data: rows x columns values, row 0 first; immediates: rows, columns.
@@ -128,6 +142,9 @@ struct table2d {
   template <class X>
   static void evaluate(const X& x) {
     x.out() = sem::table2d(x.data(), x.immediate(0), x.immediate(1), x.in(0), x.in(1));
+  }
+  static void evaluate_interval(const IntervalFrame& x) {
+    x.out() = lanes::table2d_range(x.data(), x.immediate(0), x.immediate(1), x.in(0), x.in(1));
   }
 };
 

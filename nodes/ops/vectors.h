@@ -3,8 +3,10 @@
 // nodes/semantics/vector.h.
 #pragma once
 
+#include "nodes/interval_frame.h"
 #include "nodes/op_definition.h"
 #include "nodes/op_frame.h"
+#include "nodes/semantics/shape_intervals.h"
 #include "nodes/semantics/vector.h"
 
 namespace shadetree::ops {
@@ -66,6 +68,15 @@ struct normalize {
     frame::to_array(x, 0, v);
     sem::normalize_n(v, x.components(), normalized);
     frame::for_components(x.components(), [&](int c) { x.out(c) = normalized[c]; });
+  }
+  static void evaluate_interval(const IntervalFrame& x) {
+    evaluate(x);
+    // An infinite component may make NaN (inf * 0); finite ones give a unit vector or 0.
+    if (!x.finite_inputs(1)) return;
+    lanes::Interval v[3];
+    frame::to_array(x, 0, v);
+    const float bound = lanes::unit_component_bound(sem::sum_of_squares_n(v, x.components()));
+    frame::for_components(x.components(), [&](int c) { x.out(c) = lanes::meet(x.out(c), {-bound, bound}); });
   }
 };
 
