@@ -10,6 +10,36 @@
 
 namespace shadetree {
 
+namespace {
+
+// Each brick of the grid, one per tile of a bricks_per_side x
+// bricks_per_side^2 image, on the worker threads.
+Status for_each_brick(int threads, const std::atomic<bool>* cancel, const std::function<void(const glm::ivec3&)>& visit) {
+  constexpr int side = OccupancyGrid::bricks_per_side;
+  return for_each_tile(
+      side, side * side, 1, threads,
+      [&](const Tile& tile) -> long {
+        visit(glm::ivec3(tile.x0, tile.y0 % side, tile.y0 / side));
+        return 1;
+      },
+      {}, cancel);
+}
+
+}  // namespace
+
+std::uint8_t& OccupancyGrid::brick_state(const glm::ivec3& brick) {
+  return bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x];
+}
+
+void OccupancyGrid::set_cells(const glm::ivec3& brick, std::uint8_t state) {
+  for (int k = 0; k < cells_per_brick_side; ++k)
+    for (int j = 0; j < cells_per_brick_side; ++j)
+      for (int i = 0; i < cells_per_brick_side; ++i) {
+        const glm::ivec3 cell = brick * cells_per_brick_side + glm::ivec3(i, j, k);
+        cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = state;
+      }
+}
+
 Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, const glm::vec3& hi,
                                                           const BoxOccupancy& occupied, double least_empty,
                                                           int threads, const std::atomic<bool>* cancel) {
@@ -19,65 +49,57 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
   grid.cell_size_ = (hi - lo) / static_cast<float>(cells_per_side);
   grid.cells_per_unit_ = 1.0f / grid.cell_size_;
   grid.bricks_.assign(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, 1);
-  grid.cells_.assign(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 0);
+  grid.cells_.assign(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1);
   const glm::vec3 brick_size = grid.cell_size_ * static_cast<float>(cells_per_brick_side);
-  // One brick per tile of a bricks_per_side x bricks_per_side^2 image.
-  const auto for_each_brick = [&](const std::function<void(const glm::ivec3&, std::uint8_t&)>& visit) {
-    return for_each_tile(
-        bricks_per_side, bricks_per_side * bricks_per_side, 1, threads,
-        [&](const Tile& tile) -> long {
-          const glm::ivec3 brick(tile.x0, tile.y0 % bricks_per_side, tile.y0 / bricks_per_side);
-          visit(brick, grid.bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side +
-                                    brick.x]);
-          return 1;
-        },
-        {}, cancel);
-  };
-  const auto classify = [&](const glm::ivec3& brick, std::uint8_t& state) {
+  const auto classify = [&](const glm::ivec3& brick) {
     const glm::vec3 brick_lo = lo + glm::vec3(brick) * brick_size;
-    state = occupied(brick_lo, brick_lo + brick_size) ? 1 : 0;
+    if (occupied(brick_lo, brick_lo + brick_size)) return;
+    grid.brick_state(brick) = 0;
+    grid.set_cells(brick, 0);
   };
   // First a survey of one brick in eight, those at even coordinates: where
   // it finds far less empty space than is needed, the rest are not
   // bounded (the fireball, which fills its bounds, paid 20 ms for the
   // whole first level to learn that). Only the time taken depends on it.
   const auto surveyed = [](const glm::ivec3& brick) { return brick.x % 2 == 0 && brick.y % 2 == 0 && brick.z % 2 == 0; };
-  Status survey = for_each_brick([&](const glm::ivec3& brick, std::uint8_t& state) {
-    if (surveyed(brick)) classify(brick, state);
+  Status survey = for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
+    if (surveyed(brick)) classify(brick);
   });
   if (!survey) return survey.error();
   long surveyed_empty = 0;
   for (int z = 0; z < bricks_per_side; z += 2)
     for (int y = 0; y < bricks_per_side; y += 2)
-      for (int x = 0; x < bricks_per_side; x += 2)
-        surveyed_empty += grid.bricks_[(static_cast<std::size_t>(z) * bricks_per_side + y) * bricks_per_side + x] == 0;
+      for (int x = 0; x < bricks_per_side; x += 2) surveyed_empty += grid.brick_state({x, y, z}) == 0;
   // On the gallery's 21 volumes the survey's empty fraction was within 1%
   // of the whole level's.
   constexpr double survey_margin = 0.03;
   if (static_cast<double>(surveyed_empty) < (least_empty - survey_margin) * (grid.bricks_.size() / 8))
     return std::optional<OccupancyGrid>();
-  Status first = for_each_brick([&](const glm::ivec3& brick, std::uint8_t& state) {
-    if (!surveyed(brick)) classify(brick, state);
+  Status first = for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
+    if (!surveyed(brick)) classify(brick);
   });
   if (!first) return first.error();
   const auto empty = static_cast<double>(std::count(grid.bricks_.begin(), grid.bricks_.end(), 0));
   if (empty < least_empty * static_cast<double>(grid.bricks_.size())) return std::optional<OccupancyGrid>();
-  Status second = for_each_brick([&](const glm::ivec3& brick, std::uint8_t& state) {
+  return std::optional<OccupancyGrid>(std::move(grid));
+}
+
+Status OccupancyGrid::refine(const BoxOccupancy& occupied, int threads, const std::atomic<bool>* cancel) {
+  return for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
+    std::uint8_t& state = brick_state(brick);
     if (state == 0) return;
     bool any = false;
     for (int k = 0; k < cells_per_brick_side; ++k)
       for (int j = 0; j < cells_per_brick_side; ++j)
         for (int i = 0; i < cells_per_brick_side; ++i) {
           const glm::ivec3 cell = brick * cells_per_brick_side + glm::ivec3(i, j, k);
-          const glm::vec3 cell_lo = lo + glm::vec3(cell) * grid.cell_size_;
-          if (!occupied(cell_lo, cell_lo + grid.cell_size_)) continue;
-          grid.cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = 1;
-          any = true;
+          const glm::vec3 cell_lo = lo_ + glm::vec3(cell) * cell_size_;
+          const bool holds = occupied(cell_lo, cell_lo + cell_size_);
+          cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = holds;
+          any = any || holds;
         }
     state = any ? 1 : 0;
   });
-  if (!second) return second.error();
-  return std::optional<OccupancyGrid>(std::move(grid));
 }
 
 glm::ivec3 OccupancyGrid::cell_of(const glm::vec3& point) const {

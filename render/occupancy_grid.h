@@ -45,12 +45,16 @@ class OccupancyGrid {
   static constexpr int cells_per_brick_side = 4;  // the second, where the first cannot tell
   static constexpr int cells_per_side = bricks_per_side * cells_per_brick_side;
 
-  // None when the first level finds less than `least_empty` of the
-  // bounds empty: stepping through the cells would then cost more than
-  // the samples it saves (docs/architecture.md has the measurements).
+  // The first level, every cell of an occupied brick occupied; none when
+  // it finds less than `least_empty` of the bounds empty: stepping through
+  // the cells would then cost more than the samples it saves
+  // (docs/architecture.md has the measurements).
   static Result<std::optional<OccupancyGrid>> build(const glm::vec3& lo, const glm::vec3& hi,
                                                     const BoxOccupancy& occupied, double least_empty, int threads,
                                                     const std::atomic<bool>* cancel);
+
+  // The second level: the cells of each occupied brick bounded one by one.
+  Status refine(const BoxOccupancy& occupied, int threads, const std::atomic<bool>* cancel);
 
   // Whether the point may hold something visible; everything outside the
   // bounds may.
@@ -67,6 +71,8 @@ class OccupancyGrid {
  private:
   // The cell of the finest level that a point of the bounds lies in.
   glm::ivec3 cell_of(const glm::vec3& point) const;
+  std::uint8_t& brick_state(const glm::ivec3& brick);
+  void set_cells(const glm::ivec3& brick, std::uint8_t state);
   bool inside(const glm::vec3& point) const;
   bool cell_occupied(const glm::ivec3& cell) const {
     return cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] != 0;

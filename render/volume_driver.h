@@ -74,6 +74,7 @@ struct VolumeRenderStats {
   double grid_seconds = 0;    // wall time of filling the grids, before the march
   long skipped_samples = 0;   // of primary, shadow and grid rays, in empty space
   double empty_fraction = 0;  // of the bounds, by the interval bounds
+  bool empty_space_cheap = false;  // found, but evaluated for next to nothing: not skipped
   double occupancy_seconds = 0;  // wall time of bounding the graph over the bounds' bricks
   long kernel_calls = 0;
   long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)

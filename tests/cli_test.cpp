@@ -638,14 +638,14 @@ TEST_F(Cli, BenchMeasuresQuickKernels) {
 
 TEST_F(Cli, BenchMarchesVolumeGraphs) {
   const CommandResult run =
-      shadetree("bench " + gallery + "noisy_sphere.json --size 16x16 --repetitions 1 --threads 2 --json");
+      shadetree("bench " + gallery + "noisy_sphere.json --size 32x32 --repetitions 1 --threads 2 --json");
   ASSERT_EQ(run.status, 0) << run.err;
   const auto marcher = nlohmann::json::parse(run.out)[0]["driver"];
   ASSERT_EQ(marcher.size(), 4u);  // jit and interp, at 1 and 2 threads
   for (const char* key : {"backend", "threads", "rays", "density_samples", "lane_utilisation", "kernel_s", "march_s",
                           "total_s", "kernel_sps", "kernel_vs_texture_samples"})
     EXPECT_TRUE(marcher[0].contains(key)) << key;
-  EXPECT_GT(marcher[0]["density_samples"].get<long>(), 16 * 16);
+  EXPECT_GT(marcher[0]["density_samples"].get<long>(), 32 * 32);
   EXPECT_GT(marcher[0]["lane_utilisation"].get<double>(), 0.5);
 }
 

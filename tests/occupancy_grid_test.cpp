@@ -21,10 +21,11 @@ bool meets_sphere(const glm::vec3& lo, const glm::vec3& hi) {
   return glm::length(nearest) <= radius;
 }
 
-OccupancyGrid sphere_grid() {
+OccupancyGrid sphere_grid(bool refined = true) {
   Result<std::optional<OccupancyGrid>> grid =
       OccupancyGrid::build(glm::vec3(-1.0f), glm::vec3(1.0f), meets_sphere, 0.0, 2, nullptr);
   EXPECT_TRUE(grid.ok() && grid->has_value());
+  if (refined) EXPECT_TRUE((*grid)->refine(meets_sphere, 2, nullptr).ok());
   return std::move(**grid);
 }
 
@@ -39,6 +40,20 @@ TEST(OccupancyGrid, TheSpaceAroundASphereIsEmpty) {
   EXPECT_TRUE(grid.occupied(glm::vec3(0.49f, 0.0f, 0.0f)));
   EXPECT_FALSE(grid.occupied(glm::vec3(0.9f, 0.9f, 0.9f)));
   EXPECT_TRUE(grid.occupied(glm::vec3(2.0f, 0.0f, 0.0f))) << "outside the bounds nothing is known";
+}
+
+// The first level alone holds the sphere in whole bricks: less of the
+// cube is empty, and what is empty is a part of the refined grid's.
+TEST(OccupancyGrid, TheFirstLevelHoldsTheSphereInWholeBricks) {
+  const OccupancyGrid first = sphere_grid(false), refined = sphere_grid();
+  EXPECT_LT(first.empty_fraction(), refined.empty_fraction());
+  EXPECT_GT(first.empty_fraction(), 0.5);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (int n = 0; n < 10000; ++n) {
+    const glm::vec3 point(unit(random), unit(random), unit(random));
+    if (refined.occupied(point)) ASSERT_TRUE(first.occupied(point)) << point.x << ", " << point.y << ", " << point.z;
+  }
 }
 
 // A ray through the cube stops before the sphere, and never past a point
