@@ -116,6 +116,11 @@ struct ShadowRay {
   int segments_left = 0;  // the march's budget: however t rounds, it ends
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
   std::size_t slot = 0;  // in the step's transmittance list
+  // The light's transmittance grid, whose lookup the ray tries again from
+  // `lookups_from` on: the rest of its way to the light, where the grid's
+  // rays agree, is read there instead of marched.
+  const TransmittanceGrid* grid = nullptr;
+  float lookups_from = 0.0f;
 
   // Where the sample of the next segment, `step` long but clipped at the end, lies.
   float sample_t(float step) const { return t + 0.5f * std::min(step, end - t); }
@@ -129,6 +134,15 @@ struct ObjectSample {
   glm::vec3 to_viewer{0.0f};
   float weight = 1.0f;  // 1 - the alpha of the volume in front
 };
+
+// A shadow ray left to march where a lookup met a shadow's edge marches
+// this many of the grid's ray spacings before it tries to read the rest
+// of its way to the light from the grid: clear of the bumps around where
+// it started, which the grid's rays there may pass through. From 1.4 (a
+// lookup's own normal offset) noisy_sphere_hiamp's 99th percentile
+// difference from exact shadows at 128x128 was 4.1/255; from 6, under 4.
+// The furry volumes march 25% more shadow samples for it than from 1.4.
+constexpr float marched_spacings_before_lookups = 6.0f;
 
 // What one tile's march works in: the batches of its kernel calls (march
 // samples, gradient probes, shadow samples), its kernel binding and its
@@ -304,6 +318,22 @@ class Marcher {
     shadow.t = std::max(span ? span->near : 0.0f, 0.0f);
     shadow.end = span ? std::min(span->far, distance) : 0.0f;
     shadow.slot = slot;
+    if (light < grids_.size() && grids_[light]) {
+      shadow.grid = &*grids_[light];
+      shadow.lookups_from = shadow.t + marched_spacings_before_lookups * shadow.grid->spacing();
+    }
+  }
+
+  // A shadow ray whose light has a grid, far enough along, reads the rest
+  // of its way there where the grid's rays agree (a hair's shadow edge
+  // lies behind it): true if it did, and is done.
+  bool looked_up_the_rest(ShadowRay& ray, TileCounts& counts) const {
+    if (!ray.grid || ray.t < ray.lookups_from) return false;
+    ++counts.shadow_lookups;
+    const std::optional<float> rest = ray.grid->at(ray.origin + ray.t * ray.direction);
+    if (!rest) return false;
+    ray.transmittance *= *rest;
+    return true;
   }
 
   // A shadow ray's segments whose samples lie in empty space let all the
@@ -314,7 +344,9 @@ class Marcher {
     const Clearance clearance =
         occupancy_->next_occupied(ray.origin, ray.direction, ray.sample_t(shadow_step_), ray.end);
     ray.occupied_until = clearance.until;
-    while (ray.t < ray.end && ray.segments_left > 0 && ray.sample_t(shadow_step_) < clearance.from) {
+    // Once it looks the rest up, the ray tries at every step, skipping or not.
+    while (ray.t < ray.end && ray.segments_left > 0 && ray.sample_t(shadow_step_) < clearance.from &&
+           !(ray.grid && ray.t >= ray.lookups_from)) {
       ray.t += shadow_step_;
       --ray.segments_left;
       ++counts.skipped_samples;
@@ -338,7 +370,8 @@ class Marcher {
 
   // What reaches `point` of each light, from `offset` out along its
   // normal: looked up in the light's grid where it has one, else a shadow
-  // ray to march; light l's goes to slot first + l. A lookup leaves from
+  // ray to march (which reads the rest of its way from the grid once past
+  // the shadow's edge); light l's goes to slot first + l. A lookup leaves from
   // at least `spacings` times the grid's ray spacing (a shadow map's normal
   // offset: from √2 spacings, the four light rays it interpolates pass on
   // the lit side of the point's tangent plane, where a lit surface does
@@ -436,8 +469,11 @@ class Marcher {
         live.erase(std::remove_if(live.begin(), live.end(),
                                   [](const ShadowRay* ray) { return ray->t >= ray->end || ray->segments_left <= 0; }),
                    live.end());
-        if (live.empty()) break;
       }
+      live.erase(std::remove_if(live.begin(), live.end(),
+                                [&](ShadowRay* ray) { return looked_up_the_rest(*ray, scratch.counts); }),
+                 live.end());
+      if (live.empty()) break;
       const std::size_t count = live.size();
       for (std::size_t i = 0; i < count; ++i) {
         const ShadowRay& ray = *live[i];
