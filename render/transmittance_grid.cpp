@@ -250,10 +250,15 @@ std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   };
   // Optical depth is what varies linearly across a uniform medium, as the
   // path length does, so it is what is interpolated.
-  const float transmittance = std::exp(-(across(cell[1]) + weight[1] * (across(cell[1] + 1) - across(cell[1]))));
+  const float depth = across(cell[1]) + weight[1] * (across(cell[1] + 1) - across(cell[1]));
   // Rays that disagree: an edge of a shadow passes between them, which
-  // the interpolation would blur; the caller marches a shadow ray.
-  if (std::exp(-least) - std::exp(-most) > max_spread) return std::nullopt;
+  // the interpolation would blur; the caller marches a shadow ray. Their
+  // spread e^-least - e^-most = e^-least (1 - e^-(most - least)) is within
+  // bounds without an exp where either factor is small enough: 0.25 is
+  // above e^-1.3863 and 1 - e^-0.287.
+  if (least < 1.3863f && most - least > 0.287f && std::exp(-least) - std::exp(-most) > max_spread)
+    return std::nullopt;
+  const float transmittance = std::exp(-depth);
   return transmittance < termination_ ? 0.0f : transmittance;
 }
 
