@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include <tbb/enumerable_thread_specific.h>
 
@@ -703,21 +704,29 @@ bool skipping_pays(const OccupancyGrid& grid, const Kernel& kernel, BoundKernel&
   }
   // Fewer than a few hundred of either: too little of one kind to matter.
   if (empty.size() < probes / 8 || occupied.size() < probes / 8) return true;
-  const auto cost_per_sample = [&](const std::vector<glm::vec3>& points) {
-    Batch batch(points.size(), kernel, step);
+  const auto batch_of = [&](const std::vector<glm::vec3>& points) {
+    auto batch = std::make_unique<Batch>(points.size(), kernel, step);
     for (std::size_t i = 0; i < points.size(); ++i) {
-      store3(batch.inputs, GlobalId::P, i, points[i]);
-      store3(batch.inputs, GlobalId::I, i, glm::vec3(0.0f, 0.0f, -1.0f));
+      store3(batch->inputs, GlobalId::P, i, points[i]);
+      store3(batch->inputs, GlobalId::I, i, glm::vec3(0.0f, 0.0f, -1.0f));
     }
-    double best = std::numeric_limits<double>::infinity();
-    for (int round = 0; round < 3; ++round) {
-      const auto start = std::chrono::steady_clock::now();
-      bound.run(batch.inputs.inputs(), batch.outputs.planes(), points.size());
-      best = std::min(best, static_cast<double>(nanoseconds_since(start)));
-    }
-    return best / static_cast<double>(points.size());
+    return batch;
   };
-  return cost_per_sample(empty) >= least_empty_sample_cost * cost_per_sample(occupied);
+  const std::unique_ptr<Batch> empty_batch = batch_of(empty), occupied_batch = batch_of(occupied);
+  const auto cost_per_sample = [&](Batch& batch, std::size_t count) {
+    const auto start = std::chrono::steady_clock::now();
+    bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
+    return static_cast<double>(nanoseconds_since(start)) / static_cast<double>(count);
+  };
+  // Rounds of both, the median of their ratios: a tiered kernel may move
+  // to its JIT between two calls, which then must not be compared.
+  std::vector<double> ratios;
+  for (int round = 0; round < 5; ++round) {
+    const double empty_cost = cost_per_sample(*empty_batch, empty.size());
+    ratios.push_back(empty_cost / std::max(cost_per_sample(*occupied_batch, occupied.size()), 1e-3));
+  }
+  std::nth_element(ratios.begin(), ratios.begin() + 2, ratios.end());
+  return ratios[2] >= least_empty_sample_cost;
 }
 
 // What the interval bounds found of a volume's empty space.
