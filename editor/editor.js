@@ -16,6 +16,7 @@ import { GraphView } from "./graph_view.js";
 import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
 import { element } from "./dom.js";
+import { installHoverDocs } from "./hover_docs.js";
 import { inputValueRows } from "./input_values.js";
 import { ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
@@ -1031,6 +1032,8 @@ async function start() {
     scheduleUpdate();
   });
   byId("frame-all").addEventListener("click", () => graphView.fit());
+  installHoverDocs(byId("graph-canvas"), byId("hover-doc"),
+                   (event) => graphView.docAt(graphView.canvas.convertEventToCanvasOffset(event)));
   byId("frame").addEventListener("input", (event) => setFrame(Number(event.target.value), true));
   byId("frame").addEventListener("change", (event) => setFrame(Number(event.target.value), false));
   byId("play").addEventListener("click", () => setPlaying(!state.playing));

@@ -158,6 +158,31 @@ export class GraphView {
   selectedIds() { return Object.values(this.canvas.selected_nodes || {}).filter((v) => v.shadetreeId).map((v) => v.shadetreeId); }
   select(ids) { this.canvas.selectItems(ids.map((id) => this.viewOf(id)).filter(Boolean)); }
 
+  // What to tell the user about canvas point [x, y] (canvas coordinates):
+  // {title, text} of the input or output under it, else of the node's op
+  // (a function's, the kind's outputs'), null over empty canvas.
+  docAt([x, y]) {
+    const v = this.graph.getNodeOnPos(x, y, this.canvas.visible_nodes);
+    if (!v) return null;
+    const input = v.getInputOnPos([x, y]), output = input ? null : v.getOutputOnPos([x, y]);
+    if (v.boundary === "outputs") {
+      const contract = this.state.kinds.get(this.state.doc.kind)?.outputs || [];
+      const port = input && contract.find((o) => o.name === input.name);
+      if (port) return { title: `${port.name}: ${port.type}${port.required ? "" : " (optional)"}`, text: port.doc };
+      return { title: `outputs of a ${this.state.doc.kind} graph`, text: contract.map((o) => o.name).join(", ") };
+    }
+    if (v.boundary) return null;
+    const entry = this.state.library.get(v.op);
+    const fn = entry ? null : this.state.doc.functions?.[v.op];
+    const slot = input ?? output;
+    if (slot) {
+      const port = (entry ? (input ? entry.inputs : entry.outputs) : []).find((p) => p.name === slot.name);
+      const unset = input && !input.link && !/ = /.test(slot.label ?? "") && port && "default" in port;
+      return { title: slot.label ?? slot.name, text: [port?.doc, unset && `default ${port.default}`].filter(Boolean).join("; ") };
+    }
+    return { title: v.shadetreeId ? `${v.shadetreeId} (${v.op})` : v.op, text: entry?.doc ?? fn?.doc ?? "" };
+  }
+
   // Registered, so that litegraph's own search and copy-paste make nodes
   // of it too; a function's type is registered again when its signature
   // changes.

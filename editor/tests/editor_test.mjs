@@ -710,6 +710,34 @@ try {
   assert.ok(outputsAgain.every((value, i) => Math.abs(value - outputsPicture[i]) <= 1), "and the outputs again");
   console.log("spline_probe.json: node st (uv) shown in the preview from its menu, then the outputs again");
 
+  // Hover docs: resting the pointer on a node's title shows its op's doc,
+  // on an input the input's label, on the outputs node's input the kind's
+  // contract for that output, all from /api/nodes.
+  const library = await (await request("/api/nodes")).json();
+  const hoverText = async ([x, y]) => {
+    await page.mouse.move(x - 30, y - 30);
+    await page.waitForSelector("#hover-doc", { hidden: true, timeout: 5000 });
+    await page.mouse.move(x, y);
+    await page.waitForSelector("#hover-doc:not([hidden])", { timeout: 5000 });
+    return page.$eval("#hover-doc", (tip) => [tip.querySelector("strong").textContent, tip.querySelector("span").textContent]);
+  };
+  const inputPoint = (id, name) => page.evaluate((id, name) => {
+    const { canvas, viewOf, graphView } = window.shadetreeEditor;
+    const view = id === "#outputs" ? graphView.boundaryView("outputs") : viewOf(id);
+    const [x, y] = canvas.ds.convertOffsetToCanvas(view.getConnectionPos(true, view.findInputSlot(name)));
+    const box = canvas.canvas.getBoundingClientRect();
+    return [box.left + x + 4, box.top + y];
+  }, id, name);
+  const onTitle = await hoverText(await titlePoint("curve"));
+  assert.deepEqual(onTitle, ["curve (spline)", library.ops.find((op) => op.name === "spline").doc]);
+  const onInput = await hoverText(await inputPoint("curve", "x"));
+  assert.equal(onInput[0], "x: float");
+  const onOutput = await hoverText(await inputPoint("#outputs", "color"));
+  const colorContract = library.kinds.find((kind) => kind.name === "texture").outputs.find((output) => output.name === "color");
+  assert.deepEqual(onOutput, [`color: ${colorContract.type}${colorContract.required ? "" : " (optional)"}`, colorContract.doc]);
+  await page.mouse.move(5, 5);
+  console.log(`hover docs: the spline node's op doc, its input x, and the outputs node's "color": ${onOutput[1]}`);
+
   // A graph from nothing, with the page's controls and keys only.
   const slotPoint = async (id, input, name) => {
     await drawn();
