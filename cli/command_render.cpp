@@ -33,6 +33,7 @@ struct RenderArguments {
   std::vector<std::string> assignments;
   std::optional<float> frame;
   std::string frames;
+  bool frames_given = false;  // --frames with no list: the graph's render.frames
   std::string chunk;
   bool skip_existing = false;
   int threads = 0;
@@ -117,10 +118,15 @@ Result<PreparedRender> prepare(const RenderArguments& arguments) {
   if (!loaded) return loaded.error();
   prepared.loaded = std::make_unique<LoadedGraph>(std::move(*loaded));
   const LoadedGraph& graph = *prepared.loaded;
-  if (arguments.frames.empty()) {
+  if (!arguments.frames_given) {
     prepared.frames.emplace_back(arguments.frame.value_or(graph.graph->render.frame), arguments.output);
   } else {
-    Result<std::vector<int>> listed = parse_frame_list(arguments.frames);
+    const std::optional<std::pair<int, int>>& range = graph.graph->render.frames;
+    if (arguments.frames.empty() && !range)
+      return invalid_input(arguments.file + ": --frames without a list needs the graph's render.frames [first, last]");
+    Result<std::vector<int>> listed =
+        arguments.frames.empty() ? parse_frame_list(std::to_string(range->first) + ".." + std::to_string(range->second))
+                                 : parse_frame_list(arguments.frames);
     if (!listed) return listed.error();
     if (!arguments.chunk.empty()) listed = frame_chunk(*listed, arguments.chunk);
     if (!listed) return listed.error();
@@ -340,7 +346,9 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   add_finite_option(*command, "--frame", arguments->frame, "animation frame (time = frame / 24)");
   auto* frames = command->add_option("--frames", arguments->frames,
                                      "render a numbered sequence: frames and ranges FIRST..LAST or FIRST-LAST, each "
-                                     "with an optional step xS, separated by commas (e.g. 1-240x4)")
+                                     "with an optional step xS, separated by commas (e.g. 1-240x4); with no list, "
+                                     "the graph's render.frames")
+                     ->expected(0, 1)
                      ->excludes("--frame");
   command->add_option("--chunk", arguments->chunk,
                       "render only the frames of --frames from START to END (START..END or START-END; a farm task)")
@@ -378,7 +386,10 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
                       "volume graphs: light soft samples by the density's gradient from probes (two samples a "
                       "step off, Perlin & Hoffert 1989, the default) or exact (its derivative, one sample)")
       ->check(CLI::IsMember({"probes", "exact"}));
-  command->callback([&run, arguments] { run = [arguments] { return render(*arguments); }; });
+  command->callback([&run, arguments, frames] {
+    arguments->frames_given = frames->count() > 0;
+    run = [arguments] { return render(*arguments); };
+  });
 }
 
 }  // namespace shadetree

@@ -687,10 +687,15 @@ function usesTime(nodes, functions) {
   return timed(nodes) || Object.values(functions || {}).some((fn) => timed(fn.nodes || []));
 }
 
+// The graph's render.frames, or four seconds from 0 (docs/graph-format.md).
+const frameRange = () => state.doc.render?.frames ?? [0, 95];
+
 function showFrameControls() {
   const shown = usesTime(state.doc.nodes, state.doc.functions);
   byId("frame-row").hidden = !shown;
   if (!shown) setPlaying(false);
+  const [first, last] = frameRange();
+  Object.assign(byId("frame"), { min: first, max: last });
   byId("frame").value = state.frame;
   byId("frame-value").textContent = frameText();
 }
@@ -719,7 +724,8 @@ function nextFrame() {
   setTimeout(() => {
     if (!state.playing) return;
     lastFrameAt = performance.now();
-    setFrame((state.frame + 1) % (Number(byId("frame").max) + 1), true);
+    const [first, last] = frameRange();
+    setFrame(state.frame >= first && state.frame < last ? state.frame + 1 : first, true);
   }, wait);
 }
 
@@ -790,7 +796,7 @@ async function showDocument(path, doc, text, tag = null) {
   state.fileTag = tag;
   state.previewNode = null;
   state.scope = null;
-  state.frame = state.doc.render?.frame ?? 0;
+  state.frame = state.doc.render?.frame ?? frameRange()[0];
   state.drawnKey = null;
   state.drawnSide = null;
   state.fullPreviewMs = null;

@@ -119,6 +119,12 @@ FormatFields build_render_fields(GraphKind kind) {
       part("domain", object_schema(domain_fields(), kind), section_domain),
       part("z", {{"type", "number"}}, section_domain),
       part("frame", {{"type", "number"}}, section_frame),
+      part("frames",
+           {{"type", "array"},
+            {"items", {{"type", "integer"}, {"minimum", 0}, {"maximum", largest_frame}}},
+            {"minItems", 2},
+            {"maxItems", 2}},
+           section_frame),
       part("scene", object_schema(scene_fields(kind), kind), section_scene),
       part("volume", object_schema(volume_fields(), kind), section_volume),
   };

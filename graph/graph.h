@@ -4,6 +4,7 @@
 
 #include <map>
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -73,6 +74,7 @@ struct RenderSettings {
   float domain_max[2] = {1.0f, 1.0f};  // P.xy at the upper-right corner
   float z = 0.0f;                      // P.z of the image plane
   float frame = 0.0f;
+  std::optional<std::pair<int, int>> frames;  // the animation's first and last frame
   std::optional<SceneDesc> scene;      // surface and volume graphs
   std::optional<VolumeDesc> volume;    // volume graphs
 };

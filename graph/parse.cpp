@@ -275,6 +275,20 @@ class Parser : JsonReader {
     return result;
   }
 
+  // [first, last]: whole frames, first <= last, a sequence of bounded length.
+  std::pair<int, int> frame_range(const json& frames) const {
+    const std::string expected = "render frames must be [first, last]: whole frames from 0 to " +
+                                 std::to_string(largest_frame) + ", first <= last, at most " +
+                                 std::to_string(max_sequence_frames) + " of them";
+    if (!frames.is_array() || frames.size() != 2 || !frames[0].is_number_integer() || !frames[1].is_number_integer())
+      fail({}, {}, expected);
+    // Range-checked as doubles before narrowing, as render size is.
+    const double first = frames[0].get<double>(), last = frames[1].get<double>();
+    if (first < 0 || last > static_cast<double>(largest_frame) || first > last || last - first >= max_sequence_frames)
+      fail({}, {}, expected);
+    return {static_cast<int>(first), static_cast<int>(last)};
+  }
+
   RenderSettings parse_render(const json& render, GraphKind kind) const {
     if (!render.is_object()) fail({}, {}, "field \"render\" must be an object");
     check_format_fields(*this, render, render_fields(kind), kind, "render");
@@ -307,6 +321,7 @@ class Parser : JsonReader {
     }
     if (render.contains("z")) settings.z = number(render["z"], {}, "render z");
     if (render.contains("frame")) settings.frame = number(render["frame"], {}, "render frame");
+    if (render.contains("frames")) settings.frames = frame_range(render["frames"]);
     if (render.contains("scene")) {
       settings.scene = parse_scene(*this, render["scene"], kind);
     }

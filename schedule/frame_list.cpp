@@ -5,10 +5,10 @@
 #include <optional>
 #include <sstream>
 
+#include "graph/parse.h"
+
 namespace shadetree {
 namespace {
-
-constexpr long long largest_frame = 1000000000;
 
 // A whole number at text[at...], advancing `at`; none if there is no digit.
 std::optional<long long> number_at(const std::string& text, std::size_t& at) {
@@ -56,7 +56,7 @@ Diagnostic bad_list(const std::string& what, const std::string& text, const std:
 Result<std::vector<int>> parse_frame_list(const std::string& text) {
   const std::string expected =
       "frames and ranges FIRST..LAST or FIRST-LAST, each with an optional step xS, separated by commas (e.g. "
-      "1-240x4), at most " + std::to_string(max_listed_frames) + " frames";
+      "1-240x4), at most " + std::to_string(max_sequence_frames) + " frames";
   std::vector<int> frames;
   std::stringstream parts(text);
   std::string part;
@@ -66,7 +66,7 @@ Result<std::vector<int>> parse_frame_list(const std::string& text) {
     const std::optional<Range> range = parse_range(part);
     if (!range) return bad_list("--frames", text, expected);
     for (long long frame = range->first; frame <= range->last; frame += range->step) {
-      if (frames.size() >= static_cast<std::size_t>(max_listed_frames)) return bad_list("--frames", text, expected);
+      if (frames.size() >= static_cast<std::size_t>(max_sequence_frames)) return bad_list("--frames", text, expected);
       frames.push_back(static_cast<int>(frame));
     }
   }

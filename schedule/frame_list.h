@@ -11,11 +11,9 @@
 
 namespace shadetree {
 
-// At most this many frames in a list.
-inline constexpr int max_listed_frames = 100000;
-
-// The frames of `text`, ascending and without repeats; frames are whole
-// numbers from 0 to 10^9.
+// The frames of `text`, ascending and without repeats, at most
+// max_sequence_frames of them (graph/parse.h); frames are whole numbers
+// from 0 to largest_frame.
 Result<std::vector<int>> parse_frame_list(const std::string& text);
 
 // The frames of `frames` from `start` to `end` (FIRST..LAST or FIRST-LAST);

@@ -256,6 +256,23 @@ TEST(Check, RefusesMalformedReferencesAndOversizedRenders) {
             "error: g.json: render size must be between 1 and 16384 pixels a side");
 }
 
+// render.frames: the animation's range, whole frames, first <= last, of
+// bounded length; anything else is refused with the form it must take.
+TEST(Check, RenderFramesAreARangeOfWholeFrames) {
+  const auto with_frames = [](const std::string& frames) {
+    return graph_text(R"({"id": "c", "op": "color"})", color_out, R"("render": {"frames": )" + frames + "},");
+  };
+  Result<Graph> parsed = parse_graph(with_frames("[0, 47]"), "g.json");
+  ASSERT_TRUE(parsed) << parsed.error().to_string();
+  EXPECT_EQ(parsed->render.frames, (std::pair<int, int>{0, 47}));
+  EXPECT_EQ(diagnose(with_frames("[5, 5]")), "ok");
+  const std::string expected =
+      "error: g.json: render frames must be [first, last]: whole frames from 0 to 1000000000, first <= last, at most "
+      "100000 of them";
+  for (const char* bad : {"[5, 3]", "[0.5, 2]", "[0, 100000]", "[-1, 4]", "[0, 4294967298]", "\"0-47\"", "[1]"})
+    EXPECT_EQ(diagnose(with_frames(bad)), expected) << bad;
+}
+
 TEST(ParamValue, ParsesAndRangeChecksSetValues) {
   ParamDecl param{"k", Type::vec3, {0, 0, 0}, 0.0f, 10.0f, {}};
   EXPECT_EQ(*parse_param_value(param, "1,2,3"), (std::vector<float>{1, 2, 3}));

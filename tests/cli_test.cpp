@@ -148,6 +148,23 @@ TEST_F(Cli, FramesRenderANumberedSequenceFromOneKernel) {
   EXPECT_EQ(shadetree("render " + gallery + "corona.json -o " + pattern + " --frames 5..3").status, 2);
 }
 
+// --frames with no list renders the graph's render.frames, and says what
+// is missing where the graph has none.
+TEST_F(Cli, FramesWithNoListRenderTheGraphsRange) {
+  std::string text = read_text(gallery + "looping_turbulence.json");
+  text.replace(text.find(R"("frames": [0, 47])"), 17, R"("frames": [2, 4])");
+  const fs::path graph = write("loop.json", text);
+  const std::string pattern = (directory_ / "loop.#.png").string();
+  const CommandResult run = shadetree("render " + graph.string() + " -o " + pattern + " --size 8x8 --frames");
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"loop.2.png", "loop.3.png", "loop.4.png", "loop.json"}));
+  const CommandResult none = shadetree("render " + gallery + "marble.json -o " + pattern + " --size 8x8 --frames");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("marble.json: --frames without a list needs the graph's render.frames [first, last]"),
+            std::string::npos)
+      << none.err;
+}
+
 // A farm task: the chunk of a stepped range, padded numbers, and a resumed
 // sequence that renders only the frames not yet written.
 TEST_F(Cli, FarmTasksRenderTheirChunkAndResume) {

@@ -444,6 +444,15 @@ try {
   assert.match(await page.evaluate(() => document.getElementById("preview-info").textContent), /refining/);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
   console.log(`fireball.json: a slider drag drew a ${draftSide}x${draftSide} draft, refined to 256x256 on the pause`);
+  // Its frame slider spans its render.frames, and playing wraps at the last.
+  const frameSlider = await page.$eval("#frame", (slider) => [slider.min, slider.max, slider.closest("#frame-row").hidden]);
+  assert.deepEqual(frameSlider, ["0", "47", false], "fireball's frames 0 to 47 on the slider");
+  await page.$eval("#frame", (slider) => { slider.value = "47"; slider.dispatchEvent(new Event("change")); });
+  await page.click("#play");
+  await page.waitForFunction(() => window.shadetreeEditor.state.frame === 0, { timeout: 10000 });
+  await page.click("#play");
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
+  console.log("fireball.json: the frame slider spans its render.frames, 0 to 47; playing from 47 went on at 0");
 
   // Five wheel notches over the preview dolly toward the fireball without
   // entering its bounds; "Reset view" goes back.
