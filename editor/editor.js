@@ -17,8 +17,8 @@ import { FunctionInputs } from "./function_inputs.js";
 import { History } from "./history.js";
 import { element } from "./dom.js";
 import { installHoverDocs } from "./hover_docs.js";
-import { inputValueRows } from "./input_values.js";
-import { ParamsPanel } from "./params_panel.js";
+import { inputValueRows, promotedType } from "./input_values.js";
+import { newParams, ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
 
@@ -249,7 +249,36 @@ function showNodePanel(v) {
     wired: (input) => graphView.isWired(node.id, input),
     onConstant: (input, value) => graphView.showConstant(node.id, input, value),
     onEdit: (interactive) => edited({ interactive }),
+    // Params are the main graph's: a function's body reads its inputs.
+    onPromote: state.scope ? null : (input) => promoteToParam(node.id, input),
   }));
+}
+
+// The input's constant (or its default) becomes a new param of that value,
+// which the input reads: the Params panel then edits it live, without a
+// compile. A number's range reaches twice its size.
+function promoteToParam(id, input) {
+  const value = graphView.docNode(id).in?.[input.name] ?? input.default;
+  const type = promotedType(input.type, value);
+  const param = structuredClone(newParams[type]);
+  const components = Array.isArray(param.default) ? param.default.length : 0;
+  if (value !== undefined) param.default = components && !Array.isArray(value) ? Array(components).fill(value) : value;
+  if (type === "float" || type === "int") {
+    param.min = Math.min(param.min, 2 * param.default);
+    param.max = Math.max(param.max, 2 * param.default);
+  }
+  const taken = new Set(Object.keys(state.doc.params || {}));
+  const base = `${id}_${input.name}`.replace(/[^A-Za-z0-9_]/g, "_").replace(/^(?=[0-9])/, "p");
+  let name = base;
+  for (let n = 2; taken.has(name); ++n) name = `${base}${n}`;
+  restructure((doc) => {
+    doc.params = { ...doc.params, [name]: param };
+    const node = doc.nodes.find((n) => n.id === id);
+    node.in = { ...node.in, [input.name]: `$${name}` };
+  });
+  const v = graphView.viewOf(id);
+  if (v) canvas.selectNode(v);
+  setStatus(`${id}.${input.name} reads the new param $${name}`);
 }
 
 // With no node selected: the graph's name, doc and kind. A new kind keeps

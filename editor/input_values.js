@@ -7,6 +7,7 @@
 // are undone and previewed the same way; a constant is part of the
 // program, so unlike a param's value it is compiled anew.
 import { element, hexOf, rgbOf } from "./dom.js";
+import { paramTypes } from "./params_panel.js";
 
 const components = { vec2: 2, vec3: 3, color: 3 };
 
@@ -63,16 +64,39 @@ function fieldsOf(id, input, value, changed) {
 
 // The rows for `node`'s unwired inputs ([{name, type, default, doc}]);
 // wired(name) says whether a wire feeds the input; onConstant(name, value)
-// after node.in changed, then onEdit(interactive).
-export function inputValueRows(node, inputs, { wired, onConstant, onEdit }) {
+// after node.in changed, then onEdit(interactive); onPromote(input), if
+// given, behind each row's "$" button.
+export function inputValueRows(node, inputs, { wired, onConstant, onEdit, onPromote }) {
   return inputs
     .filter((input) => !wired(input.name) && typeof node.in?.[input.name] !== "string")
-    .map((input) => element("label", { className: "inline", title: input.doc ?? "" }, [
-      `${input.name} `,
-      ...fieldsOf(node.id, input, node.in?.[input.name], (value, interactive) => {
-        setConstant(node, input.name, value);
-        onConstant(input.name, value);
-        onEdit(interactive);
-      }),
-    ]));
+    .map((input) => {
+      const row = element("label", { className: "inline", title: input.doc ?? "" }, [
+        `${input.name} `,
+        ...fieldsOf(node.id, input, node.in?.[input.name], (value, interactive) => {
+          setConstant(node, input.name, value);
+          onConstant(input.name, value);
+          onEdit(interactive);
+        }),
+      ]);
+      if (onPromote && promotedType(input.type, node.in?.[input.name] ?? input.default)) {
+        const promote = element("button", { type: "button", textContent: "$", name: `promote ${node.id}.${input.name}`,
+                                             title: "promote to a param: the input reads a new param of this value, " +
+                                                    "which the Params panel edits without a compile" });
+        promote.addEventListener("click", (event) => {
+          event.preventDefault();
+          onPromote(input);
+        });
+        row.append(promote);
+      }
+      return row;
+    });
+}
+
+// The param type an input of `type` holding `value` is promoted to (a
+// generic T from the value's shape), or null for one no param can feed.
+export function promotedType(type, value) {
+  if (paramTypes.includes(type)) return type;
+  if (type !== "T") return null;
+  if (typeof value === "number" || value === undefined) return "float";
+  return Array.isArray(value) && value.length === 2 ? "vec2" : Array.isArray(value) && value.length === 3 ? "vec3" : null;
 }

@@ -630,6 +630,24 @@ try {
   ]);
   console.log("ball's radius typed as 1.2 and its center as 0, 0.2, 0 in the node panel: previewed, undone, redone, saved as one line");
 
+  // Promote to param: the radius's "$" makes a param of its value, which
+  // the input reads and the Params panel edits; the picture stays.
+  const beforePromotion = await page.evaluate(() => window.shadetreeEditor.state.previews);
+  await page.click('button[name="promote ball.radius"]');
+  const promoted = await page.evaluate(() => {
+    const doc = window.shadetreeEditor.documentFromCanvas();
+    return { param: window.shadetreeEditor.state.doc.params.ball_radius, radius: doc.nodes.find((n) => n.id === "ball").in.radius };
+  });
+  assert.deepEqual(promoted, { param: { type: "float", default: 1.2, min: 0, max: 2.4 }, radius: "$ball_radius" });
+  await page.waitForSelector('#params input[name="ball_radius"]', { timeout: 5000 });
+  assert.equal(await page.$('input[name="ball.radius"]'), null, "the input reads the param: no constant field");
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n && window.shadetreeEditor.state.lastError === null,
+                             { timeout: 10000 }, beforePromotion);
+  await pressKeys("Control", "z");
+  assert.equal((await ballInputs()).radius, 1.2, "undo takes the param away again");
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.doc.params.ball_radius), undefined);
+  console.log("ball.radius promoted to the param $ball_radius (1.2, 0 to 2.4) and back by undo");
+
   // The curve editor draws the spline the server renders: uv.x through
   // a spline of colour knots, 16 x 1 pixels, whose centres are at x = (i + 0.5) / 16.
   const probe = {
