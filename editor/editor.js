@@ -18,6 +18,7 @@ import { History } from "./history.js";
 import { element } from "./dom.js";
 import { installHoverDocs } from "./hover_docs.js";
 import { inputValueRows, promotedType } from "./input_values.js";
+import { Minimap } from "./minimap.js";
 import { newParams, ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
@@ -1067,6 +1068,8 @@ async function start() {
     scheduleUpdate();
   });
   byId("frame-all").addEventListener("click", () => graphView.fit());
+  const minimap = new Minimap(byId("minimap"), graphView);
+  canvas.onDrawForeground = (ctx, area) => minimap.draw(area);
   installHoverDocs(byId("graph-canvas"), byId("hover-doc"),
                    (event) => graphView.docAt(graphView.canvas.convertEventToCanvasOffset(event)));
   byId("frame").addEventListener("input", (event) => setFrame(Number(event.target.value), true));

@@ -447,12 +447,27 @@ export class GraphView {
   }
 
   // Zoom and scroll so that the whole scope is in sight, not magnified.
-  fit() {
+  // [x0, y0, x1, y1] holding every node, titles included; null with none.
+  bounds() {
     const nodes = this.graph._nodes;
-    if (nodes.length === 0) return;
+    if (nodes.length === 0) return null;
     const title = LiteGraph.NODE_TITLE_HEIGHT;
-    const x0 = Math.min(...nodes.map((v) => v.pos[0])), y0 = Math.min(...nodes.map((v) => v.pos[1] - title));
-    const x1 = Math.max(...nodes.map((v) => v.pos[0] + v.size[0])), y1 = Math.max(...nodes.map((v) => v.pos[1] + v.size[1]));
+    return [Math.min(...nodes.map((v) => v.pos[0])), Math.min(...nodes.map((v) => v.pos[1] - title)),
+            Math.max(...nodes.map((v) => v.pos[0] + v.size[0])), Math.max(...nodes.map((v) => v.pos[1] + v.size[1]))];
+  }
+
+  // The view's centre on graph point [x, y], at the same zoom.
+  centreOn([x, y]) {
+    const [width, height] = this.viewSize();
+    const { scale } = this.canvas.ds;
+    this.canvas.ds.offset = [width / (2 * scale) - x, height / (2 * scale) - y];
+    this.canvas.setDirty(true, true);
+  }
+
+  fit() {
+    const box = this.bounds();
+    if (!box) return;
+    const [x0, y0, x1, y1] = box;
     const [width, height] = this.viewSize();
     const scale = Math.max(this.canvas.ds.min_scale, Math.min(1, (width - 40) / (x1 - x0), (height - 40) / (y1 - y0)));
     this.canvas.ds.scale = scale;

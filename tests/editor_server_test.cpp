@@ -204,7 +204,7 @@ TEST_F(EditorServerTest, ListsReadsAndServesTheNodeLibrary) {
   EXPECT_EQ(kinds[2]["outputs"][0], nlohmann::json::parse(R"json({"name": "density", "type": "float", "required": true,
                                                                    "doc": "density in [0,1] (Perlin & Hoffert 1989)"})json"));
   EXPECT_EQ(kinds[2]["outputs"][1]["required"], false);
-  EXPECT_EQ(kinds[0]["render"], nlohmann::json::parse(R"(["size", "domain", "z", "frame"])"));
+  EXPECT_EQ(kinds[0]["render"], nlohmann::json::parse(R"(["size", "domain", "z", "frame", "frames"])"));
   EXPECT_EQ(client_->Get("/assets/index.html", headers_)->status, 200);
   EXPECT_EQ(client_->Get("/assets/missing.js", headers_)->status, 404);
   EXPECT_EQ(client_->Get("/api/nothing", headers_)->status, 404);

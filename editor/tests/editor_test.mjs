@@ -969,6 +969,34 @@ try {
   });
   assert.equal(outside, 0, "every node of ocean in sight after F");
   console.log(`ocean.json: F framed all ${await page.evaluate(() => window.shadetreeEditor.graph._nodes.length)} nodes`);
+  // The minimap: hidden while every node is in sight, shown once zoomed
+  // in; a click on its top left corner brings the view there.
+  await drawn();
+  assert.equal(await page.$eval("#minimap", (map) => map.hidden), true, "no minimap with the whole graph in sight");
+  // Zoomed to 1 on the graph's middle, the view lies inside the graph:
+  // the map is the graph's box.
+  await page.evaluate(() => {
+    const { canvas, graphView } = window.shadetreeEditor;
+    const [x0, y0, x1, y1] = graphView.bounds();
+    canvas.ds.scale = 1;
+    graphView.centreOn([(x0 + x1) / 2, (y0 + y1) / 2]);
+  });
+  await page.waitForSelector("#minimap:not([hidden])", { timeout: 5000 });
+  const map = await page.$eval("#minimap", (element) => { const box = element.getBoundingClientRect(); return [box.left, box.top]; });
+  await page.mouse.click(map[0] + 3, map[1] + 3);
+  await drawn();
+  const centre = await page.evaluate(() => {
+    const { canvas, graphView } = window.shadetreeEditor;
+    const [width, height] = graphView.viewSize();
+    const box = graphView.bounds();
+    const [x, y] = canvas.ds.convertCanvasToOffset([width / 2, height / 2]);
+    return [x - box[0], y - box[1], box[2] - box[0], box[3] - box[1]];
+  });
+  // 3 pixels into a map 160 pixels long: within 4 of them.
+  const near = Math.max(centre[2], centre[3]) * 4 / 160;
+  assert.ok(Math.abs(centre[0]) < near && Math.abs(centre[1]) < near,
+            `the view centred near the graph's top left corner: ${centre.map(Math.round)}`);
+  console.log(`ocean.json zoomed to 1: the minimap shows, and a click on its corner centred the view ${centre.slice(0, 2).map(Math.round)} from the graph's top left`);
 
   // Texture previews on the page's own GPU, in a second Chromium with
   // WebGL 2 (SwiftShader): the one above runs without (--disable-gpu), so
