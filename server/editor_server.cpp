@@ -310,9 +310,15 @@ void EditorServer::add_request_guards() {
   http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
     send_error(response, 500, "internal error");
   });
-  http.set_error_handler([](const httplib::Request&, httplib::Response& response) {
+  http.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
     if (!response.body.empty()) return;
-    const std::string message = response.status == 413 ? "request body too large"
+    // Debian's cpp-httplib is built to read a form's body (curl -d sends
+    // one) up to 8 KB only, whatever the server's own limit.
+    const bool form = request.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded");
+    const std::string message = response.status == 413 && form
+                                    ? "request body too large for a form (at most 8 KB): send the graph as "
+                                      "application/json (curl --data-binary @g.json -H 'Content-Type: application/json')"
+                                : response.status == 413 ? "request body too large"
                                 : response.status == 404 ? "no such endpoint"
                                                          : "bad request";
     send_error(response, response.status, message);

@@ -365,6 +365,23 @@ TEST_F(EditorServerTest, GlslOfATextureGraphWithItsUniforms) {
   EXPECT_EQ(stats["compiles"], 0) << "emitting GLSL compiles no kernel";
 }
 
+// A graph over 8 KB posted as a form (curl -d sends that content type) is
+// refused by the HTTP library, whose form limit is built in; the error
+// says how to send it instead, and sent so it is read.
+TEST_F(EditorServerTest, AGraphTooLargeForAFormIsAskedForAsJson) {
+  const std::string padded = std::string(sines_graph) + std::string(20 * 1024, ' ');
+  auto form = client_->Post("/api/check?path=waves.json", headers_, padded, "application/x-www-form-urlencoded");
+  ASSERT_TRUE(form);
+  EXPECT_EQ(form->status, 413);
+  EXPECT_EQ(nlohmann::json::parse(form->body)["error"],
+            "request body too large for a form (at most 8 KB): send the graph as application/json "
+            "(curl --data-binary @g.json -H 'Content-Type: application/json')");
+  auto json = client_->Post("/api/check?path=waves.json", headers_, padded, "application/json");
+  ASSERT_TRUE(json);
+  ASSERT_EQ(json->status, 200) << json->body;
+  EXPECT_EQ(nlohmann::json::parse(json->body)["ok"], true);
+}
+
 // The editor opens only what parses as a graph file (server/editor_server.h).
 TEST_F(EditorServerTest, CheckSaysWhenABodyIsNotAGraphFileAtAll) {
   const std::string not_graphs[] = {"{\"format\": ", "[1, 2]",
