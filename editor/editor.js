@@ -21,9 +21,9 @@ import { inputValueRows, promotedType } from "./input_values.js";
 import { Minimap } from "./minimap.js";
 import { newParams, ParamsPanel } from "./params_panel.js";
 import { PreviewView } from "./preview_view.js";
+import { boundedSide, panelForSide, shapedDims, sideForPanel } from "./preview_size.js";
 import { Thumbnails, thumbnailSide } from "./thumbnails.js";
 
-const previewSize = 256;
 // How long after the last interactive edit a volume preview is refined to
 // full size; until then it renders at a fraction of it.
 const refineDelayMs = 250;
@@ -56,7 +56,8 @@ const state = {
   fullPreviewMs: null,  // how long the last full-size preview of this graph took
   draftMsPerPixel: null, // what the last draft of this graph took per pixel
   drawnKey: null,       // what the preview shows: size, frame and the document sent
-  drawnSide: null,      // and its side
+  drawnSide: null,      // and its long side
+  previewSide: boundedSide(Number(localStorage.getItem("shadetree.previewSide") ?? NaN)), // the full preview's long side
   savedText: null,      // the document as last opened or saved
   fileText: null,       // the file's text as last opened or saved, which a save patches
   lastExport: null,     // {url, name, type, size} of the last exported image
@@ -416,13 +417,16 @@ function scheduleUpdate({ interactive = false } = {}) {
 // small draft doubles up to the largest draft, then the preview is drawn
 // at full size and step.
 function previewSide() {
-  if (state.doc.kind !== "volume") return previewSize;
-  const largest = state.fullPreviewMs === null || state.fullPreviewMs > 150 ? previewSize / 4 : previewSize / 2;
+  const full = state.previewSide;
+  if (state.doc.kind !== "volume") return full;
+  const largest = state.fullPreviewMs === null || state.fullPreviewMs > 150 ? full / 4 : full / 2;
   const paused = !state.playing && performance.now() - state.lastInteraction >= refineDelayMs;
   if (paused && state.drawnSide !== null)
-    return state.drawnSide < largest ? Math.min(2 * state.drawnSide, largest) : previewSize;
-  const msPerPixel = state.draftMsPerPixel ?? (state.fullPreviewMs ?? 0) / (previewSize * previewSize) / draftSaving;
-  const side = 16 * Math.floor(Math.sqrt(draftBudgetMs / msPerPixel) / 16);
+    return state.drawnSide < largest ? Math.min(2 * state.drawnSide, largest) : full;
+  // Pixels per side squared: 1 for a square preview, less for another shape.
+  const fill = pixelsOf(full) / (full * full);
+  const msPerPixel = state.draftMsPerPixel ?? (state.fullPreviewMs ?? 0) / pixelsOf(full) / draftSaving;
+  const side = 16 * Math.floor(Math.sqrt(draftBudgetMs / msPerPixel / fill) / 16);
   return Math.min(Math.max(side, 32), largest);
 }
 
@@ -484,8 +488,8 @@ async function update() {
       return;
     }
   }
-  const side = probe ? previewSize : previewSide();
-  const previewKey = `${side} ${state.frame}${probe}\n${previewBody}`;
+  const side = probe ? state.previewSide : previewSide();
+  const previewKey = `${previewDims(side).join("x")} ${state.frame}${probe}\n${previewBody}`;
   // Unless this very picture is shown and no other is on its way.
   const needed = () => inflight || previewKey !== state.drawnKey;
   if (needed()) {
@@ -504,7 +508,7 @@ async function update() {
   }
   if (state.playing) {
     nextFrame();
-  } else if (side < previewSize) {
+  } else if (side < state.previewSide) {
     const paused = performance.now() - state.lastInteraction;
     refine = setTimeout(() => scheduleUpdate(), Math.max(0, refineDelayMs - paused));
   } else {
@@ -540,7 +544,8 @@ async function drawOnGpu(doc, covers, structural, sequence) {
   };
   let drawn = null;
   try {
-    drawn = await gpu.draw(doc, previewSize, state.frame, pathQuery(), {
+    drawn = await gpu.draw(doc, state.previewSide, state.frame, pathQuery(), {
+      dimsOf: previewDims,
       stale,
       show: (canvas) => {
         show(canvas);
@@ -553,10 +558,10 @@ async function drawOnGpu(doc, covers, structural, sequence) {
   if (!drawn || stale()) return false;
   show(drawn);
   state.drawnKey = null;
-  state.drawnSide = previewSize;
+  state.drawnSide = state.previewSide;
   state.previews += 1;
   recordLatency(covers, true, structural);
-  byId("preview-info").textContent = `${previewSize}x${previewSize} in ${(performance.now() - started).toFixed(1)} ms (GPU: WebGL 2)` +
+  byId("preview-info").textContent = `${previewDims().join("x")} in ${(performance.now() - started).toFixed(1)} ms (GPU: WebGL 2)` +
     (view.changed ? ", view moved" : "");
   byId("reset-view").disabled = !view.changed;
   showOk();
@@ -575,8 +580,9 @@ async function requestPreview(body, side, key, covers, structural, probe = "") {
   inflight = { controller, started: performance.now(), done: new Promise((resolve) => { finished = resolve; }) };
   const started = inflight.started;
   try {
-    const draft = side < previewSize ? "&draft=1" : "";
-    const response = await api("POST", `/api/preview?${pathQuery()}width=${side}&height=${side}&frame=${state.frame}&slot=main${draft}${probe}`,
+    const draft = side < state.previewSide ? "&draft=1" : "";
+    const [width, height] = previewDims(side);
+    const response = await api("POST", `/api/preview?${pathQuery()}width=${width}&height=${height}&frame=${state.frame}&slot=main${draft}${probe}`,
                                body, controller.signal);
     if (response.status === 409) return false;
     if (!response.ok) {
@@ -593,13 +599,13 @@ async function requestPreview(body, side, key, covers, structural, probe = "") {
     recordLatency(covers, false, structural);
     const took = performance.now() - started;
     // A draft that waited for a compile says little of the next one.
-    if (side === previewSize) state.fullPreviewMs = took;
-    else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / (side * side);
+    if (side === state.previewSide) state.fullPreviewMs = took;
+    else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / pixelsOf(side);
     state.previews += 1;
     const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
     const gpuRefusal = gpu.enabled && gpuKinds.includes(state.doc.kind) && gpu.error ? `; GPU: ${gpu.error}` : "";
     byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (CPU, kernel: ${response.headers.get("X-Kernel")}${gpuRefusal})` +
-      (side < previewSize ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "") +
+      (side < state.previewSide ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "") +
       (probe ? `, node "${state.previewNode.id}"${state.previewNode.scope ? ` of ${state.previewNode.scope}` : ""}` : "");
     byId("reset-view").disabled = !view.changed;
     showOk();
@@ -652,6 +658,60 @@ function recordLatency(covers, gpuDrawn, structural) {
 }
 
 // A coarse preview is scaled up, smoothly, to the preview's size.
+// --- the preview's size (editor/preview_size.js) ---
+
+// [width, height] of a preview of long side `side`, shaped as the export.
+function previewDims(side = state.previewSide) {
+  return shapedDims(side, Number(byId("export-width").value), Number(byId("export-height").value));
+}
+
+const pixelsOf = (side) => previewDims(side).reduce((a, b) => a * b);
+
+// Sizes the panel and the preview's canvas to the full preview, keeping
+// the picture shown (stretched) until the next one is drawn.
+function fitPreview() {
+  byId("panel").style.width = `${panelForSide(state.previewSide)}px`;
+  const [width, height] = previewDims();
+  previewCanvas.style.width = `${width}px`;
+  previewCanvas.style.height = `${height}px`;
+  if (previewCanvas.width === width && previewCanvas.height === height) return;
+  const shown = document.createElement("canvas");
+  shown.width = previewCanvas.width;
+  shown.height = previewCanvas.height;
+  shown.getContext("2d").drawImage(previewCanvas, 0, 0);
+  previewCanvas.width = width;
+  previewCanvas.height = height;
+  previewCanvas.getContext("2d").drawImage(shown, 0, 0, width, height);
+  state.drawnKey = null;
+}
+
+// The splitter left of the panel sets the preview's long side: a drag of
+// it by some pixels widens the panel and the preview as much. The graph
+// keeps at least minimumGraphWidth pixels.
+const minimumGraphWidth = 320;
+function installPanelSplitter(splitter) {
+  let start = null;  // {x, side} where the drag began
+  splitter.addEventListener("pointerdown", (event) => {
+    start = { x: event.clientX, side: state.previewSide };
+    splitter.setPointerCapture(event.pointerId);
+  });
+  splitter.addEventListener("pointermove", (event) => {
+    if (!start) return;
+    const widest = sideForPanel(window.innerWidth - minimumGraphWidth);
+    state.previewSide = Math.min(boundedSide(start.side + start.x - event.clientX), widest);
+    fitPreview();
+    scheduleUpdate({ interactive: true });
+  });
+  const release = () => {
+    if (!start) return;
+    start = null;
+    localStorage.setItem("shadetree.previewSide", String(state.previewSide));
+    scheduleUpdate();
+  };
+  splitter.addEventListener("pointerup", release);
+  splitter.addEventListener("pointercancel", release);
+}
+
 function drawPreview(image) {
   const context = previewCanvas.getContext("2d");
   if (image.width === previewCanvas.width && image.height === previewCanvas.height) {
@@ -839,6 +899,7 @@ async function showDocument(path, doc, text, tag = null) {
   const size = state.doc.render?.size || [512, 512];
   byId("export-width").value = size[0];
   byId("export-height").value = size[1];
+  fitPreview();
   if (path) selectInGraphList(path);
   else byId("graph-list").value = "";
   showPalette();
@@ -1058,6 +1119,13 @@ async function start() {
   byId("undo").addEventListener("click", undo);
   byId("redo").addEventListener("click", redo);
   byId("export").addEventListener("click", exportImage);
+  for (const field of [byId("export-width"), byId("export-height")])
+    field.addEventListener("input", () => {
+      fitPreview();
+      scheduleUpdate();
+    });
+  installPanelSplitter(byId("panel-splitter"));
+  fitPreview();
   byId("add-node").addEventListener("click", () => graphView.addNode(palette.value));
   byId("scope").addEventListener("change", (event) => showScope(event.target.value));
   byId("reset-view").addEventListener("click", () => view.reset());

@@ -52,12 +52,13 @@ export class GpuPreview {
     return this.enabled && gpuKinds.includes(doc.kind) && shaderKey(doc) !== this.refusedKey;
   }
 
-  // Draws `doc` at side x side, frame `frame`, refined from drafts where
+  // Draws `doc` at long side `side` (dimsOf(side): its [width, height];
+  // square unless given), frame `frame`, refined from drafts where
   // it would take longer than the budget: show(canvas) after each draft,
   // the canvas when the picture is drawn, null (this.error says why) for
   // the server to draw instead, or undefined if stale() turned true
   // between drafts (a newer edit).
-  async draw(doc, side, frame, pathQuery, { show = () => {}, stale = () => false } = {}) {
+  async draw(doc, side, frame, pathQuery, { dimsOf = (s) => [s, s], show = () => {}, stale = () => false } = {}) {
     const key = shaderKey(doc);
     const refuse = (error) => {
       this.refusedKey = key;
@@ -86,14 +87,14 @@ export class GpuPreview {
     this.sides = [];
     for (;;) {
       const started = performance.now();
-      this.canvas.draw(size, size, frame);
+      this.canvas.draw(...dimsOf(size), frame);
       this.drawMs.set(size, performance.now() - started);
       this.sides.push(size);
       if (size >= side) break;
       const next = Math.min(side, 2 * size);
       const projected = this.drawMs.get(size) * (next / size) ** 2;
       if (projected > this.longestDrawMs)
-        return refuse(`the page's GPU would take about ${(projected / 1000).toFixed(1)} s for a ${next}x${next} draft`);
+        return refuse(`the page's GPU would take about ${(projected / 1000).toFixed(1)} s for a ${dimsOf(next).join("x")} draft`);
       show(this.canvas.gl.canvas);
       await new Promise((resolve) => setTimeout(resolve, 0));  // input and painting between drafts
       if (stale()) return undefined;

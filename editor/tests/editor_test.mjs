@@ -114,7 +114,9 @@ try {
   };
   // Drags param `name`'s slider with the mouse, 3 pixels a step.
   const dragSlider = async (name, steps, on = page) => {
-    const box = await (await on.$(`input[name="${name}"]`)).boundingBox();
+    const slider = await on.$(`input[name="${name}"]`);
+    await slider.scrollIntoView();
+    const box = await slider.boundingBox();
     await on.mouse.move(box.x + 2, box.y + box.height / 2);
     await on.mouse.down();
     for (let step = 1; step <= steps; ++step) await on.mouse.move(box.x + 2 + step * 3, box.y + box.height / 2);
@@ -917,29 +919,36 @@ try {
                    placesBefore, "the places survive save and reopen");
   console.log(`saved as from_nothing.json: shadetree check accepts it; P1 at ${placesBefore.P1} and turbulence1 at ${placesBefore.turbulence1} when opened again`);
 
+  // `shadetree render` of `file` at width x height against the preview's
+  // pixels, both as 8-bit sRGB: the largest difference of a channel.
+  const renderedAgainstPreview = async (file, width, height) => {
+    const rendered = join(folder, file.replace(/\.json$/, ".png"));
+    const render = spawnSync(binary, ["render", join(folder, file), "-o", rendered, "--size", `${width}x${height}`], { encoding: "utf8" });
+    assert.equal(render.status, 0, render.stderr);
+    const renderedPixels = await page.evaluate(async (png) => {
+      const image = new Image();
+      image.src = `data:image/png;base64,${png}`;
+      await image.decode();
+      const canvas = document.createElement("canvas");
+      canvas.width = image.width;
+      canvas.height = image.height;
+      const context = canvas.getContext("2d");
+      context.drawImage(image, 0, 0);
+      return Array.from(context.getImageData(0, 0, image.width, image.height).data);
+    }, readFileSync(rendered).toString("base64"));
+    const previewedPixels = await page.evaluate(([w, h]) => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, w, h).data),
+                                                [width, height]);
+    assert.equal(renderedPixels.length, previewedPixels.length, "the render is the preview's size");
+    let largest = 0;
+    for (let i = 0; i < renderedPixels.length; ++i) largest = Math.max(largest, Math.abs(renderedPixels[i] - previewedPixels[i]));
+    return { largest, previewedPixels };
+  };
   // It renders as previewed: `shadetree render` of the saved file at the
   // preview's size against the preview's pixels, both as 8-bit sRGB.
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256 &&
                              window.shadetreeEditor.state.path === "from_nothing.json" &&
                              document.getElementById("status").textContent.includes("from_nothing.json: ok"), { timeout: 20000 });
-  const rendered = join(folder, "from_nothing.png");
-  const render = spawnSync(binary, ["render", join(folder, "from_nothing.json"), "-o", rendered, "--size", "256x256"], { encoding: "utf8" });
-  assert.equal(render.status, 0, render.stderr);
-  const renderedPixels = await page.evaluate(async (png) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${png}`;
-    await image.decode();
-    const canvas = document.createElement("canvas");
-    canvas.width = image.width;
-    canvas.height = image.height;
-    const context = canvas.getContext("2d");
-    context.drawImage(image, 0, 0);
-    return Array.from(context.getImageData(0, 0, image.width, image.height).data);
-  }, readFileSync(rendered).toString("base64"));
-  const previewedPixels = await page.evaluate(() => Array.from(document.getElementById("preview").getContext("2d").getImageData(0, 0, 256, 256).data));
-  assert.equal(renderedPixels.length, previewedPixels.length, "the render is the preview's size");
-  let renderLargest = 0;
-  for (let i = 0; i < renderedPixels.length; ++i) renderLargest = Math.max(renderLargest, Math.abs(renderedPixels[i] - previewedPixels[i]));
+  const { largest: renderLargest, previewedPixels } = await renderedAgainstPreview("from_nothing.json", 256, 256);
   assert.ok(renderLargest <= 1, `from_nothing.json renders as previewed (largest difference ${renderLargest} of 255)`);
   assert.ok(new Set(previewedPixels).size > 32, "the preview shows the turbulence, not a blank");
   console.log(`from_nothing.json: shadetree render draws what the preview showed (largest difference ${renderLargest} of 255; ` +
@@ -951,6 +960,46 @@ try {
     .filter((entry) => entry.structural).map((entry) => entry.ms).sort((a, b) => a - b));
   console.log(`latency from the hand, structural edits of from_nothing.json (goal: 100 ms): median ` +
               `${structural[Math.floor(structural.length / 2)]?.toFixed(1)} ms, slowest ${structural.at(-1)?.toFixed(1)} ms over ${structural.length} edits`);
+
+  // The preview takes the export's shape: typed 640 x 360, it is 256x144
+  // and shows what `shadetree render --size 256x144` renders.
+  for (const [field, value] of [["#export-width", "640"], ["#export-height", "360"]]) {
+    await page.click(field, { clickCount: 3 });
+    await page.keyboard.type(value);
+  }
+  await page.waitForFunction(() => {
+    const canvas = document.getElementById("preview");
+    return canvas.width === 256 && canvas.height === 144 && window.shadetreeEditor.state.drawnSide === 256 &&
+           document.getElementById("preview-info").textContent.startsWith("256x144");
+  }, { timeout: 20000 });
+  const shaped = await renderedAgainstPreview("from_nothing.json", 256, 144);
+  assert.ok(shaped.largest <= 1, `a 16:9 preview renders as previewed (largest difference ${shaped.largest} of 255)`);
+  // Dragging the splitter 100 px left makes the preview's long side 356,
+  // kept for the next page; dragged back, 256 again.
+  const splitter = await (await page.$("#panel-splitter")).boundingBox();
+  const dragSplitter = async (from, to) => {
+    await page.mouse.move(from, splitter.y + 100);
+    await page.mouse.down();
+    await page.mouse.move(to, splitter.y + 100, { steps: 4 });
+    await page.mouse.up();
+  };
+  const middle = splitter.x + splitter.width / 2;
+  await dragSplitter(middle, middle - 100);
+  await page.waitForFunction(() => {
+    const canvas = document.getElementById("preview");
+    return canvas.width === 356 && canvas.height === 200 && window.shadetreeEditor.state.drawnSide === 356;
+  }, { timeout: 20000 });
+  assert.equal(await page.evaluate(() => localStorage.getItem("shadetree.previewSide")), "356");
+  const larger = await renderedAgainstPreview("from_nothing.json", 356, 200);
+  assert.ok(larger.largest <= 1, `the larger preview renders as previewed (largest difference ${larger.largest} of 255)`);
+  await dragSplitter(middle - 100, middle);
+  for (const field of ["#export-width", "#export-height"]) {
+    await page.click(field, { clickCount: 3 });
+    await page.keyboard.type("512");
+  }
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256 && document.getElementById("preview").height === 256,
+                             { timeout: 20000 });
+  console.log("the preview took the export's 16:9 shape (256x144) and a 356 px long side from the splitter, each as rendered");
 
   // Frame all (F) brings ocean's 127 nodes into the canvas.
   await page.evaluate(() => window.shadetreeEditor.open("roundtrip/ocean.json"));
