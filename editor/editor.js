@@ -6,7 +6,7 @@
 // a change of a value or range reaches only the uniform block, so a
 // slider drag re-renders without recompiling.
 import { LGraphCanvas } from "/assets/node_modules/@comfyorg/litegraph/dist/litegraph.es.js";
-import { api, errorOf, imageOf } from "./api.js";
+import { api, errorOf, imageOf, readTiles } from "./api.js";
 import { attributeEditor } from "./curve_editor.js";
 import { copyNodes, pasteNodes } from "./clipboard.js";
 import { documentText } from "./document_text.js";
@@ -570,7 +570,9 @@ async function drawOnGpu(doc, covers, structural, sequence) {
 
 // Draws the preview, unless a newer one was drawn already; false if it
 // was superseded or refused. Requests of slot "main" supersede the one
-// in flight: the server stops it and answers 409.
+// in flight: the server stops it and answers 409. A volume's full-size
+// preview is streamed: its tiles are drawn over the draft as they are
+// marched, so that a slow one shows something new every few tiles.
 async function requestPreview(body, side, key, covers, structural, probe = "") {
   inflight?.controller.abort();
   const id = ++previewRequests;
@@ -581,37 +583,53 @@ async function requestPreview(body, side, key, covers, structural, probe = "") {
   const started = inflight.started;
   try {
     const draft = side < state.previewSide ? "&draft=1" : "";
+    const streamed = side === state.previewSide && !probe && state.doc.kind === "volume";
     const [width, height] = previewDims(side);
-    const response = await api("POST", `/api/preview?${pathQuery()}width=${width}&height=${height}&frame=${state.frame}&slot=main${draft}${probe}`,
-                               body, controller.signal);
+    const response = await api("POST", `/api/preview?${pathQuery()}width=${width}&height=${height}&frame=${state.frame}&slot=main${draft}${probe}` +
+                               (streamed ? "&stream=1" : ""), body, controller.signal);
     if (response.status === 409) return false;
     if (!response.ok) {
       const error = await errorOf(response);
       if (opened === state.opened) setStatus(error, true);
       return false;
     }
-    const image = await imageOf(response);
-    if (id < previewDrawn || opened !== state.opened) return false;
+    const kernel = response.headers.get("X-Kernel");
+    let milliseconds;
+    if (streamed) {
+      let marched = 0;
+      await readTiles(response, (x, y, tile) => {
+        if (opened !== state.opened) return;
+        previewCanvas.getContext("2d").putImageData(tile, x, y);
+        marched += tile.width * tile.height;
+        byId("preview-info").textContent = `${width}x${height}, ${Math.floor((100 * marched) / (width * height))}% marched (CPU, kernel: ${kernel})`;
+      });
+      if (id < previewDrawn || opened !== state.opened) return false;
+      milliseconds = performance.now() - started;
+    } else {
+      const image = await imageOf(response);
+      if (id < previewDrawn || opened !== state.opened) return false;
+      drawPreview(image);
+      milliseconds = Number(response.headers.get("X-Milliseconds"));
+    }
     previewDrawn = id;
     state.drawnKey = key;
     state.drawnSide = side;
-    drawPreview(image);
     recordLatency(covers, false, structural);
     const took = performance.now() - started;
     // A draft that waited for a compile says little of the next one.
     if (side === state.previewSide) state.fullPreviewMs = took;
-    else if (response.headers.get("X-Kernel") !== "compiling") state.draftMsPerPixel = took / pixelsOf(side);
+    else if (kernel !== "compiling") state.draftMsPerPixel = took / pixelsOf(side);
     state.previews += 1;
-    const milliseconds = Number(response.headers.get("X-Milliseconds")).toFixed(1);
     const gpuRefusal = gpu.enabled && gpuKinds.includes(state.doc.kind) && gpu.error ? `; GPU: ${gpu.error}` : "";
-    byId("preview-info").textContent = `${image.width}x${image.height} in ${milliseconds} ms (CPU, kernel: ${response.headers.get("X-Kernel")}${gpuRefusal})` +
+    byId("preview-info").textContent = `${width}x${height} in ${milliseconds.toFixed(1)} ms (CPU, kernel: ${kernel}${gpuRefusal})` +
       (side < state.previewSide ? (state.playing ? ", coarse while playing" : ", refining") : "") + (view.changed ? ", view moved" : "") +
       (probe ? `, node "${state.previewNode.id}"${state.previewNode.scope ? ` of ${state.previewNode.scope}` : ""}` : "");
     byId("reset-view").disabled = !view.changed;
     showOk();
     return true;
   } catch (error) {
-    if (error.name !== "AbortError" && opened === state.opened) setStatus(String(error), true);
+    // A stream's end record says "superseded" where a newer preview stopped it.
+    if (error.name !== "AbortError" && error.message !== "superseded" && opened === state.opened) setStatus(String(error), true);
     return false;
   } finally {
     finished();

@@ -56,6 +56,7 @@ struct RenderRequest {
   int lane_width = 0;                       // the kernel's vector width, for the lane figures only
   std::vector<std::string> search_paths;    // folders besides the graph's own that its scene may read
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (schedule/image_tiles.h)
+  TileSink tile_done;  // volume: told of each tile as it is done (other kinds: not called)
   // volume: light soft samples by the density's exact gradient, from
   // normal_kernel (VolumeRenderOptions::normal_kernel), not two probes
   bool exact_normals = false;

@@ -10,6 +10,7 @@ Result<Image> render_preview(const LoadedGraph& loaded, const Kernel& kernel, co
   render.threads = request.threads;
   render.draft = request.draft;
   render.cancel = request.cancel;
+  render.tile_done = request.tile_done;
   Result<std::unique_ptr<FrameRenderer>> frames = prepare_render(*loaded.graph, render);
   if (!frames) return frames.error();
   return (*frames)->render(kernel, loaded.params, request.frame, {}, nullptr);

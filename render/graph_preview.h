@@ -9,6 +9,7 @@
 #include "ir/kernel.h"
 #include "nodes/image.h"
 #include "pipeline/compile_graph.h"
+#include "schedule/image_tiles.h"
 
 namespace shadetree {
 
@@ -19,6 +20,7 @@ struct PreviewRequest {
   int threads = 0;  // 0: all cores
   bool draft = false;  // volumes march coarser steps (RenderRequest::draft), the editor's previews while editing
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile (schedule/image_tiles.h)
+  TileSink tile_done;  // volume: told of each tile as it is done (RenderRequest::tile_done)
 };
 
 // RGB, or RGBA for a texture graph with an alpha output.

@@ -1011,6 +1011,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
             const glm::vec3& value = pixels[static_cast<std::size_t>(y) * tile.width + x];
             for (int c = 0; c < 3; ++c) pixel[c] = value[c];
           }
+        if (options.tile_done) options.tile_done(image, tile);
         rays += counts.rays;
         density_samples += counts.density_samples;
         gradient_samples += counts.gradient_samples;
@@ -1075,6 +1076,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.skip_empty_space = request.shadows != ShadowMode::exact;
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;
+  options.tile_done = request.tile_done;
   if (request.exact_normals && !request.normal_kernel)
     return invalid_input("exact normals need the kernel of the graph with its normal (graph/derived_normals.h)");
   options.normal_kernel = request.exact_normals ? request.normal_kernel : nullptr;

@@ -56,6 +56,7 @@ struct VolumeRenderOptions {
   ProgressCallback progress;  // may be empty
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
   TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
+  TileSink tile_done;  // may be empty
 };
 
 // Where the time went (seconds of one core, summed over threads) and how

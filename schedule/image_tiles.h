@@ -11,10 +11,17 @@
 
 namespace shadetree {
 
+struct Image;
+
 struct Tile {
   int x0 = 0, y0 = 0;         // top-left pixel
   int width = 0, height = 0;  // at most the tile size (less on the right and bottom edges)
 };
+
+// Told of each tile of a frame once its pixels in `frame` are final, on
+// the thread that rendered it: how the editor's server streams a slow
+// preview as it fills in (server/preview_stream.h).
+using TileSink = std::function<void(const Image& frame, const Tile& tile)>;
 
 // The tiles of one image shared with other processes (an MPI job,
 // schedule/mpi_job.h): for_each_tile renders only the tiles claimed here.

@@ -28,6 +28,7 @@
 #include "io/output_file.h"
 #include "server/node_library.h"
 #include "server/node_probe.h"
+#include "server/preview_stream.h"
 
 namespace shadetree {
 namespace {
@@ -130,19 +131,6 @@ Result<int> integer_parameter(const httplib::Request& request, const char* name,
   }
   return invalid_input(std::string(name) + " must be an integer from " + std::to_string(low) + " to " +
                        std::to_string(high) + ", got \"" + text + "\"");
-}
-
-// Float pixels as bytes, clamped to [0, 1] as PNG output does; RGBA.
-std::string rgba_bytes(const Image& image) {
-  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
-  std::string bytes(pixels * 4, '\0');
-  for (std::size_t i = 0; i < pixels; ++i)
-    for (int c = 0; c < 4; ++c) {
-      const float value = c < image.channels ? image.pixels[i * image.channels + c] : 1.0f;
-      const float clamped = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-      bytes[4 * i + c] = static_cast<char>(static_cast<unsigned char>(clamped * 255.0f + 0.5f));
-    }
-  return bytes;
 }
 
 // A node's thumbnail shows its values' shape whatever their range (a
@@ -283,10 +271,13 @@ void EditorServer::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-struct EditorServer::Rendered {
-  Image image;
-  PreviewKernel::Source kernel;
+struct EditorServer::PreparedRender {
+  LoadedGraph loaded;
+  PreviewKernel kernel;
+  PreviewRequest preview;
   double compile_milliseconds;  // graph text to a kernel that runs
+  std::string slot;
+  std::shared_ptr<std::atomic<bool>> cancel;  // raised by a newer request of the slot
 };
 
 void EditorServer::add_routes() {
@@ -482,26 +473,40 @@ void EditorServer::add_render_routes() {
   httplib::Server& http = *server_;
   http.Post("/api/preview", [this](const httplib::Request& request, httplib::Response& response) {
     const auto start = std::chrono::steady_clock::now();
-    std::optional<Rendered> rendered = render_body(request, response, options_.max_preview_side);
-    if (!rendered) return;
+    const bool streamed = request.get_param_value("stream") == "1";
+    if (streamed && request.has_param("node"))
+      return send_error(response, 400, "a node's preview is not streamed: its range is mapped over the whole picture");
+    std::optional<PreparedRender> prepared = prepare_body(request, response, options_.max_preview_side);
+    if (!prepared) return;
+    const auto set_headers = [&] {
+      response.set_header("X-Width", std::to_string(prepared->preview.width));
+      response.set_header("X-Height", std::to_string(prepared->preview.height));
+      response.set_header("X-Kernel", source_name(prepared->kernel.source));
+      response.set_header("X-Compile-Milliseconds", std::to_string(prepared->compile_milliseconds));
+    };
+    if (streamed) {
+      set_headers();
+      return stream_render(std::make_shared<PreparedRender>(std::move(*prepared)), response);
+    }
+    Result<Image> image = render_prepared(*prepared);
+    if (!image) return send_render_error(response, image.error(), *prepared->cancel);
     ++previews_;
     if (request.has_param("node")) {
-      const auto [lowest, highest] = show_thumbnail_range(rendered->image);
+      const auto [lowest, highest] = show_thumbnail_range(*image);
       response.set_header("X-Range", std::to_string(lowest) + " " + std::to_string(highest));
     }
-    response.set_content(rgba_bytes(rendered->image), "application/octet-stream");
-    response.set_header("X-Width", std::to_string(rendered->image.width));
-    response.set_header("X-Height", std::to_string(rendered->image.height));
-    response.set_header("X-Kernel", source_name(rendered->kernel));
+    response.set_content(rgba_bytes(*image), "application/octet-stream");
+    set_headers();
     response.set_header("X-Milliseconds", std::to_string(milliseconds_since(start)));
-    response.set_header("X-Compile-Milliseconds", std::to_string(rendered->compile_milliseconds));
   });
   http.Post("/api/export", [this](const httplib::Request& request, httplib::Response& response) {
     const std::string format = request.has_param("format") ? request.get_param_value("format") : "png";
     if (format != "png" && format != "exr") return send_error(response, 400, "format must be png or exr");
-    std::optional<Rendered> rendered = render_body(request, response, options_.max_export_side);
-    if (!rendered) return;
-    Result<std::string> bytes = image_file_bytes(rendered->image, format);
+    std::optional<PreparedRender> prepared = prepare_body(request, response, options_.max_export_side);
+    if (!prepared) return;
+    Result<Image> image = render_prepared(*prepared);
+    if (!image) return send_render_error(response, image.error(), *prepared->cancel);
+    Result<std::string> bytes = image_file_bytes(*image, format);
     if (!bytes) return send_error(response, 500, bytes.error().message);
     const Result<std::filesystem::path> path = graph_path(request, false);
     const std::string stem = path ? path->stem().string() : "untitled";
@@ -510,8 +515,8 @@ void EditorServer::add_render_routes() {
   });
 }
 
-std::optional<EditorServer::Rendered> EditorServer::render_body(const httplib::Request& request,
-                                                                httplib::Response& response, int max_side) {
+std::optional<EditorServer::PreparedRender> EditorServer::prepare_body(const httplib::Request& request,
+                                                                      httplib::Response& response, int max_side) {
   Result<std::filesystem::path> path = graph_path(request, false);
   if (!path) return send_error(response, 400, path.error().message), std::nullopt;
   Result<PreviewRequest> preview = preview_request(request, max_side);
@@ -524,15 +529,53 @@ std::optional<EditorServer::Rendered> EditorServer::render_body(const httplib::R
   Result<PreviewKernel> kernel = kernels_.kernel_for(loaded->ir);
   if (!kernel) return send_error(response, 500, kernel.error().to_string()), std::nullopt;
   const double compile_milliseconds = milliseconds_since(start);
-  const std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? nullptr : claim_slot(slot);
-  preview->cancel = cancel.get();
+  std::shared_ptr<std::atomic<bool>> cancel = slot.empty() ? std::make_shared<std::atomic<bool>>(false) : claim_slot(slot);
+  return PreparedRender{std::move(*loaded), std::move(*kernel), *preview, compile_milliseconds, slot, std::move(cancel)};
+}
+
+Result<Image> EditorServer::render_prepared(PreparedRender& prepared) {
+  prepared.preview.cancel = prepared.cancel.get();
   ++rendering_;
-  Result<Image> image = render_preview(*loaded, *kernel->kernel, *preview);
+  Result<Image> image = render_preview(prepared.loaded, *prepared.kernel.kernel, prepared.preview);
   --rendering_;
-  if (cancel) release_slot(slot, cancel);
-  if (!image && cancel && cancel->load()) return send_error(response, 409, "superseded"), std::nullopt;
-  if (!image) return send_error(response, http_status(image.error()), image.error().to_string()), std::nullopt;
-  return Rendered{std::move(*image), kernel->source, compile_milliseconds};
+  if (!prepared.slot.empty()) release_slot(prepared.slot, prepared.cancel);
+  return image;
+}
+
+void EditorServer::send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled) {
+  if (cancelled) return send_error(response, 409, "superseded");
+  send_error(response, http_status(error), error.to_string());
+}
+
+// The render runs when the library asks for the body, after the headers
+// went; tiles are written from the render's threads, one at a time. A
+// client gone (a newer edit aborted it) cancels the render.
+void EditorServer::stream_render(std::shared_ptr<PreparedRender> prepared, httplib::Response& response) {
+  response.set_chunked_content_provider("application/octet-stream", [this, prepared](std::size_t, httplib::DataSink& sink) {
+    std::mutex writing;
+    bool open = true, streamed = false;
+    const auto write = [&](const std::string& record) {
+      open = open && sink.write(record.data(), record.size());
+      return open;
+    };
+    prepared->preview.tile_done = [&](const Image& frame, const Tile& tile) {
+      const std::string record = tile_record(frame, tile);
+      std::lock_guard lock(writing);
+      streamed = true;
+      if (!write(record)) prepared->cancel->store(true);
+    };
+    Result<Image> image = render_prepared(*prepared);
+    std::lock_guard lock(writing);
+    prepared->preview.tile_done = nullptr;
+    if (image) {
+      ++previews_;
+      // Kinds whose drivers do not tell of tiles send the frame whole.
+      if (!streamed) write(tile_record(*image, {0, 0, image->width, image->height}));
+    }
+    write(end_record(image ? std::string() : prepared->cancel->load() ? "superseded" : image.error().to_string()));
+    if (open) sink.done();
+    return open;
+  });
 }
 
 std::shared_ptr<std::atomic<bool>> EditorServer::claim_slot(const std::string& slot) {

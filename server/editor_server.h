@@ -41,7 +41,10 @@
 //                               function=F, ID is a node of function F's body.
 //                               slot=S: a newer request of the same slot cancels this one,
 //                               which then answers 409 {"error": "superseded"}. draft=1: a
-//                               volume marches at a coarser step (render/graph_preview.h)
+//                               volume marches at a coarser step (render/graph_preview.h).
+//                               stream=1 (not with node=): the picture as records of tiles sent
+//                               as they are done, then an end record with the error if any
+//                               (server/preview_stream.h); no X-Milliseconds
 //   POST /api/glsl?path=P       the body as graph P in GLSL for the page's own GPU
 //                               (glslgen/emit_glsl.h): {"source": the fragment shader,
 //                               "uniforms": [{"param", "name", "type", "slot", "components"}]};
@@ -68,6 +71,7 @@
 #include "graph/check.h"
 #include "graph/diagnostic.h"
 #include "jit/jit_compiler.h"
+#include "nodes/image.h"
 #include "server/bounded_http_server.h"
 #include "server/preview_kernels.h"
 #include "server/served_folder.h"
@@ -108,7 +112,7 @@ class EditorServer {
   void stop();  // and waits for the server's thread
 
  private:
-  struct Rendered;  // a request's body rendered (editor_server.cpp)
+  struct PreparedRender;  // a request's body loaded and compiled, ready to render (editor_server.cpp)
 
   EditorServer(const ServeOptions& options, ServedFolder graphs, ServedFolder editor);
   void add_routes();
@@ -126,9 +130,15 @@ class EditorServer {
   void serve_editor_file(httplib::Response& response, const std::string& relative) const;
   // The graph file a request names, or (unless `named`) the served folder's untitled.json.
   Result<std::filesystem::path> graph_path(const httplib::Request& request, bool named) const;
-  // Renders the request's body (a graph, or a node of it with node=) at
-  // width x height up to `max_side`, or sends the error and returns nothing.
-  std::optional<Rendered> render_body(const httplib::Request& request, httplib::Response& response, int max_side);
+  // The request's body (a graph, or a node of it with node=) to render at
+  // width x height up to `max_side` in its slot, or sends the error and
+  // returns nothing.
+  std::optional<PreparedRender> prepare_body(const httplib::Request& request, httplib::Response& response, int max_side);
+  Result<Image> render_prepared(PreparedRender& prepared);
+  // A failed render's error: 409 where a newer request of the slot superseded it.
+  static void send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled);
+  // Sends the render's tiles as they are done (server/preview_stream.h).
+  void stream_render(std::shared_ptr<PreparedRender> prepared, httplib::Response& response);
   // The slot's flag, raised to cancel the render of its previous request.
   std::shared_ptr<std::atomic<bool>> claim_slot(const std::string& slot);
   void release_slot(const std::string& slot, const std::shared_ptr<std::atomic<bool>>& flag);

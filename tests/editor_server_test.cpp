@@ -580,6 +580,69 @@ TEST_F(EditorServerTest, DraftVolumePreviewsMarchCoarserToNearlyThePicture) {
   EXPECT_LT(difference / static_cast<double>(full->body.size()), 4.0) << "of nearly the same picture (mean, of 255)";
 }
 
+// A streamed preview (server/preview_stream.h) is the volume's tiles as
+// they are done, which put together are the preview's very bytes; a kind
+// whose driver does not tell of tiles arrives whole; both end with an
+// empty end record.
+TEST_F(EditorServerTest, AStreamedVolumePreviewIsItsTilesThenTheEnd) {
+  const std::string cloud = R"({"format": "shadetree-graph", "version": 1, "kind": "volume",
+    "nodes": [{"id": "p", "op": "P"}, {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 0.8, "softness": 0.6}}],
+    "outputs": {"density": "d", "color": [1, 0.9, 0.8]},
+    "render": {"volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}}}})";
+  const auto u32 = [](const std::string& bytes, std::size_t at) {
+    std::uint32_t value = 0;
+    for (int i = 3; i >= 0; --i) value = value << 8 | static_cast<unsigned char>(bytes[at + i]);
+    return value;
+  };
+  // The picture the records paint, and how many tile records there were.
+  const auto assemble = [&](const std::string& body, int width, int height) {
+    std::string picture(static_cast<std::size_t>(width) * height * 4, '\0');
+    int tiles = 0;
+    std::size_t at = 0;
+    for (;;) {
+      EXPECT_LE(at + 16, body.size()) << "a stream ends with an end record";
+      if (at + 16 > body.size()) break;
+      const std::uint32_t x = u32(body, at), y = u32(body, at + 4), w = u32(body, at + 8), h = u32(body, at + 12);
+      at += 16;
+      if (w == 0) {
+        EXPECT_EQ(h, 0u) << "no error: " << body.substr(at, h);
+        EXPECT_EQ(at + h, body.size()) << "nothing after the end";
+        break;
+      }
+      EXPECT_LE(x + w, static_cast<std::uint32_t>(width));
+      EXPECT_LE(y + h, static_cast<std::uint32_t>(height));
+      for (std::uint32_t row = 0; row < h; ++row)
+        picture.replace(((y + row) * width + x) * 4, w * 4, body, at + row * w * 4, w * 4);
+      at += static_cast<std::size_t>(w) * h * 4;
+      ++tiles;
+    }
+    return std::pair{picture, tiles};
+  };
+  auto whole = client_->Post("/api/preview?path=waves.json&width=80&height=48", headers_, cloud, "application/json");
+  auto streamed = client_->Post("/api/preview?path=waves.json&width=80&height=48&stream=1&slot=main", headers_, cloud,
+                                "application/json");
+  ASSERT_EQ(whole->status, 200) << whole->body;
+  ASSERT_EQ(streamed->status, 200) << streamed->body;
+  EXPECT_EQ(streamed->get_header_value("X-Width"), "80");
+  EXPECT_EQ(streamed->get_header_value("X-Height"), "48");
+  const auto [picture, tiles] = assemble(streamed->body, 80, 48);
+  EXPECT_EQ(tiles, 6) << "32-pixel tiles: 3 across, 2 down";
+  EXPECT_EQ(picture, whole->body);
+
+  auto texture = client_->Post("/api/preview?path=waves.json&width=40&height=20&stream=1", headers_, sines_graph,
+                               "application/json");
+  auto texture_whole = client_->Post("/api/preview?path=waves.json&width=40&height=20", headers_, sines_graph,
+                                     "application/json");
+  ASSERT_EQ(texture->status, 200) << texture->body;
+  const auto [texture_picture, texture_tiles] = assemble(texture->body, 40, 20);
+  EXPECT_EQ(texture_tiles, 1);
+  EXPECT_EQ(texture_picture, texture_whole->body);
+
+  auto node = client_->Post("/api/preview?path=waves.json&width=8&height=8&stream=1&node=p", headers_, cloud,
+                            "application/json");
+  EXPECT_EQ(node->status, 400);
+}
+
 TEST_F(EditorServerTest, ExportsImageFilesAndSaveAsKeepsExistingFiles) {
   auto png = client_->Post("/api/export?path=waves.json&width=40&height=30&format=png", headers_, sines_graph,
                            "application/json");
