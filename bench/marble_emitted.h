@@ -1,15 +1,12 @@
 // graphs/marble.json as the C++ that `shadetree emit --cpp` writes, built
 // by g++ and by clang++ (-O2 -march=native), to compare with the JIT and
-// the yardstick. Same signature as yardstick::marble.
+// the yardsticks.
 #pragma once
 
-#include <cstddef>
+#include "bench/plane_kernel.h"
 
 namespace shadetree::emitted {
 
-void marble_gcc(const float* x, const float* y, const float* z, const float* filter_width, float* red, float* green,
-                float* blue, std::size_t count);
-void marble_clang(const float* x, const float* y, const float* z, const float* filter_width, float* red, float* green,
-                  float* blue, std::size_t count);
+PlaneKernel marble_gcc, marble_clang;
 
 }  // namespace shadetree::emitted
