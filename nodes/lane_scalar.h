@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace shadetree::lanes {
 
@@ -21,6 +22,15 @@ inline bool both(bool a, bool b) { return a && b; }
 inline bool either(bool a, bool b) { return a || b; }
 inline bool negate(bool a) { return !a; }
 inline bool differ(bool a, bool b) { return a != b; }
+
+// visit(0) then visit(1), as integral constants: a loop of two written
+// out whatever a compiler's unrolling makes of its body (each call is an
+// instantiation of its own, called once).
+template <class Visit>
+void each_of_0_and_1(Visit visit) {
+  visit(std::integral_constant<int, 0>{});
+  visit(std::integral_constant<int, 1>{});
+}
 
 // x * x, named so that an interval lane can bound it below by 0.
 template <class F>

@@ -101,23 +101,27 @@ PeriodicAxis<F> periodic_axis(F x, F period) {
 // (u, v, w) = p - (i, j, k). The axes say how cells hash: as they are, or
 // wrapped by a period. `outer_hash`, added to k before its phi, is how a
 // fourth axis extends the hash (nodes/semantics/noise4.h); 0 for 3D.
+//
+// The knot loops are written out (each_of_0_and_1): a kernel's optimizer
+// left the outer one rolled around a body too large to unroll by its
+// measure, which kept the noise tables spilled and reloaded per knot.
 template <class F, class Axis, class Visit>
 void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
                          IntOf<F> outer_hash, Visit visit) {
   F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
-  for (int dk = 0; dk < 2; ++dk) {
+  each_of_0_and_1([&](auto dk) {
     auto hash_k = noise_phi(tables, az.index(dk) + outer_hash);
     F w = fz - float(dk);
-    for (int dj = 0; dj < 2; ++dj) {
+    each_of_0_and_1([&](auto dj) {
       auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
       F v = fy - float(dj);
-      for (int di = 0; di < 2; ++di) {
+      each_of_0_and_1([&](auto di) {
         auto slot = (ax.index(di) + hash_jk) & (noise_table_size - 1);
         F u = fx - float(di);
         visit(slot, u, v, w);
-      }
-    }
-  }
+      });
+    });
+  });
 }
 
 template <class F, class Axis, class Visit>

@@ -16,11 +16,11 @@ template <class F, class Axis, class Visit>
 void for_each_noise4_knot(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
                           const Axis& az, const Axis& aw, Visit visit) {
   F fw = w - aw.corner();
-  for (int dl = 0; dl < 2; ++dl) {
+  each_of_0_and_1([&](auto dl) {  // written out, as the 3D knots are
     auto hash_l = noise_phi(tables, aw.index(dl));
     F t = fw - float(dl);
     for_each_noise_knot(tables, x, y, z, ax, ay, az, hash_l, [&](auto slot, F u, F v, F s) { visit(slot, u, v, s, t); });
-  }
+  });
 }
 
 // A knot's 4D gradient: the unit vector G[phi(slot)] of the 3D tables for
