@@ -79,6 +79,16 @@ void send_json(httplib::Response& response, const nlohmann::json& json) {
   response.set_content(json.dump(), "application/json");
 }
 
+// A diagnostic as the page is shown it: paths inside the served folder
+// relative to it, as the page names files; where the folder is on the
+// server's disk is none of the page's business.
+Diagnostic relative_to(const ServedFolder& folder, Diagnostic diagnostic) {
+  const std::string root = (folder.path() / "").string();
+  for (std::string* text : {&diagnostic.file, &diagnostic.message})
+    for (std::size_t at; (at = text->find(root)) != std::string::npos;) text->erase(at, root.size());
+  return diagnostic;
+}
+
 nlohmann::json diagnostic_json(const Diagnostic& diagnostic) {
   return {{"file", diagnostic.file},       {"node", diagnostic.node},         {"input", diagnostic.input},
           {"message", diagnostic.message}, {"text", diagnostic.to_string()}};
@@ -170,7 +180,8 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // A body that does not load as a graph: 422, with the diagnostic's fields.
-void send_unprocessable(httplib::Response& response, const Diagnostic& diagnostic) {
+void send_unprocessable(httplib::Response& response, const ServedFolder& folder, const Diagnostic& error) {
+  const Diagnostic diagnostic = relative_to(folder, error);
   response.status = 422;
   send_json(response, {{"error", diagnostic.to_string()}, {"diagnostic", diagnostic_json(diagnostic)}});
 }
@@ -415,7 +426,7 @@ void EditorServer::add_graph_file_routes() {
       file.close();
       return file ? "" : "cannot write " + temporary;
     });
-    if (!written) return send_error(response, 500, written.error().message);
+    if (!written) return send_error(response, 500, relative_to(graphs_, written.error()).message);
     response.set_header("ETag", entity_tag(request.body));
     send_json(response, {{"saved", request.get_param_value("path")}});
   });
@@ -438,7 +449,7 @@ void EditorServer::add_check_route() {
     // The editor opens a graph with a check error, to mend it, but not a
     // file that does not parse as one: the canvas could not show it.
     const auto refused = [&](bool parsed, const Diagnostic& error) {
-      send_json(response, {{"ok", false}, {"parsed", parsed}, {"error", diagnostic_json(error)}});
+      send_json(response, {{"ok", false}, {"parsed", parsed}, {"error", diagnostic_json(relative_to(graphs_, error))}});
     };
     Result<Graph> parsed = parse_graph(request.body, path->string());
     if (!parsed) return refused(false, parsed.error());
@@ -453,11 +464,11 @@ void EditorServer::add_glsl_route() {
     Result<std::filesystem::path> path = graph_path(request, false);
     if (!path) return send_error(response, 400, path.error().message);
     Result<Graph> parsed = parse_graph(request.body, path->string());
-    if (!parsed) return send_unprocessable(response, parsed.error());
+    if (!parsed) return send_unprocessable(response, graphs_, parsed.error());
     Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
-    if (!loaded) return send_unprocessable(response, loaded.error());
+    if (!loaded) return send_unprocessable(response, graphs_, loaded.error());
     Result<GlslShader> shader = glsl_shader(*loaded->graph, loaded->ir, loaded->params, {loaded->graph->name, false});
-    if (!shader) return send_unprocessable(response, shader.error());
+    if (!shader) return send_unprocessable(response, graphs_, shader.error());
     nlohmann::json uniforms = nlohmann::json::array();
     for (const GlslUniform& uniform : shader->uniforms)
       uniforms.push_back({{"param", uniform.param},
@@ -525,7 +536,7 @@ std::optional<EditorServer::PreparedRender> EditorServer::prepare_body(const htt
   if (slot.size() > 100) return send_error(response, 400, "slot names are at most 100 characters"), std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   Result<LoadedGraph> loaded = load_body(request, *path, files_);
-  if (!loaded) return send_unprocessable(response, loaded.error()), std::nullopt;
+  if (!loaded) return send_unprocessable(response, graphs_, loaded.error()), std::nullopt;
   Result<PreviewKernel> kernel = kernels_.kernel_for(loaded->ir);
   if (!kernel) return send_error(response, 500, kernel.error().to_string()), std::nullopt;
   const double compile_milliseconds = milliseconds_since(start);
@@ -542,9 +553,9 @@ Result<Image> EditorServer::render_prepared(PreparedRender& prepared) {
   return image;
 }
 
-void EditorServer::send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled) {
+void EditorServer::send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled) const {
   if (cancelled) return send_error(response, 409, "superseded");
-  send_error(response, http_status(error), error.to_string());
+  send_error(response, http_status(error), relative_to(graphs_, error).to_string());
 }
 
 // The render runs when the library asks for the body, after the headers
@@ -572,7 +583,9 @@ void EditorServer::stream_render(std::shared_ptr<PreparedRender> prepared, httpl
       // Kinds whose drivers do not tell of tiles send the frame whole.
       if (!streamed) write(tile_record(*image, {0, 0, image->width, image->height}));
     }
-    write(end_record(image ? std::string() : prepared->cancel->load() ? "superseded" : image.error().to_string()));
+    write(end_record(image                   ? std::string()
+                     : prepared->cancel->load() ? "superseded"
+                                                : relative_to(graphs_, image.error()).to_string()));
     if (open) sink.done();
     return open;
   });

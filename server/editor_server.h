@@ -136,7 +136,7 @@ class EditorServer {
   std::optional<PreparedRender> prepare_body(const httplib::Request& request, httplib::Response& response, int max_side);
   Result<Image> render_prepared(PreparedRender& prepared);
   // A failed render's error: 409 where a newer request of the slot superseded it.
-  static void send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled);
+  void send_render_error(httplib::Response& response, const Diagnostic& error, bool cancelled) const;
   // Sends the render's tiles as they are done (server/preview_stream.h).
   void stream_render(std::shared_ptr<PreparedRender> prepared, httplib::Response& response);
   // The slot's flag, raised to cancel the render of its previous request.

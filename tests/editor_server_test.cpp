@@ -336,9 +336,30 @@ TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
   EXPECT_EQ(json["parsed"], true) << "a graph file with a check error";
   EXPECT_EQ(json["error"]["node"], "s");
   EXPECT_EQ(json["error"]["input"], "frequency");
-  const Result<LoadedGraph> cli = compile_graph_text(wrong, (root_ / "graphs" / "waves.json").string());
+  const Result<LoadedGraph> cli = compile_graph_text(wrong, "waves.json");
   ASSERT_FALSE(cli.ok());
-  EXPECT_EQ(json["error"]["text"], cli.error().to_string()) << "the same text as the command line";
+  EXPECT_EQ(json["error"]["text"], cli.error().to_string())
+      << "the command line's text, naming the file as the page does";
+}
+
+// Where the served folder is on the server's disk is not shown to the
+// page: a diagnostic names files relative to it.
+TEST_F(EditorServerTest, ErrorsNameFilesRelativeToTheServedFolder) {
+  const std::string missing_image = R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+    "nodes": [{"id": "uv", "op": "uv"}, {"id": "im", "op": "image", "in": {"uv": "uv"}, "file": "images/nope.png"}],
+    "outputs": {"color": "im"}})";
+  auto check = client_->Post("/api/check?path=more/waves.json", headers_, missing_image, "application/json");
+  auto preview = client_->Post("/api/preview?path=more/waves.json&width=4&height=4", headers_, missing_image,
+                               "application/json");
+  ASSERT_EQ(check->status, 200) << check->body;
+  ASSERT_EQ(preview->status, 422) << preview->body;
+  const auto checked = nlohmann::json::parse(check->body)["error"];
+  EXPECT_EQ(checked["file"], "more/waves.json");
+  EXPECT_EQ(checked["node"], "im");
+  for (const std::string& body : {check->body, preview->body}) {
+    EXPECT_EQ(body.find(fs::canonical(root_ / "graphs").string()), std::string::npos) << body;
+    EXPECT_NE(body.find("more/images/nope.png"), std::string::npos) << body;
+  }
 }
 
 // The page's GPU previews (editor/gpu_preview.js) take the shader and its
