@@ -1,6 +1,7 @@
 // shadetree check FILE...: parse and type-check graphs without running
 // them, and set up each one's driver (render/graph_kinds.h) as render
 // would, scene files and all, so that check refuses what render would.
+// A graph that fails the type check has each of its faults reported.
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/arguments.h"
 #include "io/graph_files.h"
+#include "graph/parse.h"
 #include "pipeline/compile_graph.h"
 #include "render/graph_kinds.h"
 
@@ -23,14 +25,20 @@ void add_check_command(CLI::App& app, CommandRunner& run) {
     run = [files, search_paths] {
       ExitStatus worst = ExitStatus::ok;
       for (const std::string& file : *files) {
-        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files(*search_paths));
+        const GraphFiles files = graph_files(*search_paths);
+        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, files);
+        const auto failed = [&](ExitStatus status) {
+          if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
+        };
+        if (!loaded) {
+          for (const Diagnostic& fault : every_fault(load_graph(file), loaded.error(), files)) failed(report(fault));
+          continue;
+        }
         RenderRequest request;
         request.search_paths = *search_paths;
-        Result<std::unique_ptr<FrameRenderer>> renderer =
-            loaded ? prepare_render(*loaded->graph, request) : loaded.error();
+        Result<std::unique_ptr<FrameRenderer>> renderer = prepare_render(*loaded->graph, request);
         if (!renderer) {
-          const ExitStatus status = report(renderer.error());
-          if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
+          failed(report(renderer.error()));
           continue;
         }
         std::printf("ok: %s (%s graph \"%s\", %zu instructions)\n", printable(file).c_str(),

@@ -45,8 +45,8 @@ const state = {
   doc: null,            // the graph file's JSON
   scope: null,          // the function shown on the canvas, or null: the main graph
   previews: 0,          // previews drawn
-  lastError: null,      // the checker's diagnostic of the current document, or null
-  unreadError: null,    // or of a node no output reads, which does not stop the preview
+  errors: [],           // the checker's diagnostics of the current document, the one to mend first first
+  unreadErrors: [],     // or of nodes no output reads, which do not stop the preview
   keepLayout: false,    // whether saves write the nodes' places (the file had them, or the user placed nodes)
   sequence: 0,          // of the latest update; older previews are dropped
   opened: 0,            // files opened: a preview of an earlier one is never drawn
@@ -392,7 +392,12 @@ async function checkOf(body) {
   const key = `${state.path}\n${body}`;
   if (!checks.has(key)) {
     const response = await api("POST", `/api/check?${pathQuery().slice(0, -1)}`, body);
-    const result = response.ok ? await response.json() : { ok: false, error: { text: await errorOf(response) } };
+    let result;
+    if (response.ok) result = await response.json();
+    else {
+      const error = { text: await errorOf(response) };
+      result = { ok: false, error, errors: [error] };
+    }
     if (checks.size >= 4) checks.delete(checks.keys().next().value);
     checks.set(key, result);
   }
@@ -456,8 +461,10 @@ async function update() {
       if (!check.ok && check.parsed) {
         const read = withoutUnreadNodes(doc);
         const readCheck = await checkOf(JSON.stringify(read, null, 2));
-        // Else the error that stops what the outputs read is the one to mend.
-        [check, previewed] = readCheck.ok ? [{ ok: true, unread: check.error }, read] : [readCheck, doc];
+        // Else the errors that stop what the outputs read are the ones to
+        // mend; those of unread nodes are shown beside them.
+        const unread = check.errors.filter((error) => readCheck.ok || !readCheck.errors.some((e) => e.text === error.text));
+        [check, previewed] = readCheck.ok ? [{ ok: true, unread }, read] : [{ ...readCheck, unread }, doc];
       }
       if (sequence !== state.sequence) return;
     } catch (error) {
@@ -466,11 +473,11 @@ async function update() {
     }
     state.checked = check.ok ? { key: checkKey, check, whole: previewed === doc } : null;
   }
-  state.lastError = check.ok ? null : check.error;
-  state.unreadError = check.unread ?? null;
-  graphView.markError();
-  byId("diagnostic").textContent = state.lastError ? state.lastError.text
-                                 : state.unreadError ? `No output reads ${state.unreadError.node}: ${state.unreadError.text}` : "";
+  state.errors = check.ok ? [] : check.errors;
+  state.unreadErrors = check.unread ?? [];
+  graphView.markErrors();
+  byId("diagnostic").textContent = [...state.errors.map((error) => error.text),
+                                    ...state.unreadErrors.map((error) => `No output reads ${error.node}: ${error.text}`)].join("\n");
   if (!check.ok) {
     setStatus(check.error.text, true);
     recordLatency(covers, false, structural);  // the error is what the edit shows
@@ -525,7 +532,9 @@ function refreshThumbnailsWhenStill(doc, previewBody, whole) {
 }
 
 function showOk() {
-  setStatus(`${state.path || "untitled"}: ok` + (state.unreadError ? ` (no output reads ${state.unreadError.node}, which has an error)` : ""),
+  const unread = state.unreadErrors.map((error) => error.node);
+  setStatus(`${state.path || "untitled"}: ok` +
+            (unread.length ? ` (no output reads ${unread.join(", ")}, which ${unread.length > 1 ? "have errors" : "has an error"})` : ""),
             false);
 }
 
@@ -909,8 +918,8 @@ async function showDocument(path, doc, text, tag = null) {
   state.drawnSide = null;
   state.fullPreviewMs = null;
   state.draftMsPerPixel = null;
-  state.lastError = null;
-  state.unreadError = null;
+  state.errors = [];
+  state.unreadErrors = [];
   thumbnails.cancel();
   thumbnails.cache.clear();
   view.clear();

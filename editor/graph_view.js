@@ -97,8 +97,8 @@ class BoundaryNode extends LGraphNode {
 const measure = document.createElement("canvas").getContext("2d");
 
 export class GraphView {
-  // state: the editor's {library, kinds, doc, scope, lastError,
-  // unreadError}, read here (and new nodes added to state.doc); onEdit():
+  // state: the editor's {library, kinds, doc, scope, errors,
+  // unreadErrors}, read here (and new nodes added to state.doc); onEdit():
   // the user changed the scope's nodes or wires; onPlace(): the user put
   // nodes in new places (a drag, a new node); thumbnailOf(id): the
   // thumbnail entry of a node, or null; nodeMenu(v): the items of node
@@ -362,7 +362,7 @@ export class GraphView {
     this.wire(views, sources, outputs);
     this.showing = false;
     if (fit) this.fit();
-    this.markError();
+    this.markErrors();
   }
 
   // The main graph's outputs node offers every output of its kind's
@@ -529,7 +529,7 @@ export class GraphView {
     const slot = v?.findInputSlot(input) ?? -1;
     if (slot < 0) return;
     labelConstant(v.inputs[slot], value);
-    this.markError();
+    this.markErrors();
   }
 
   // Whether a wire feeds input `input` of node `id` on the canvas.
@@ -539,19 +539,22 @@ export class GraphView {
     return slot >= 0 && v.inputs[slot].link != null;
   }
 
-  // The checker's diagnostic on the node and input it names: red when it
-  // stops the preview, amber on a node no output reads, which does not.
-  markError() {
-    const diagnostic = this.state.lastError ?? this.state.unreadError;
-    const [color, bgcolor] = this.state.lastError ? ["#8a2c2c", "#4a1f1f"] : ["#8a6a2c", "#4a3a1f"];
+  // The checker's diagnostics on the nodes and inputs they name: red
+  // when they stop the preview, amber on nodes no output reads, which do
+  // not.
+  markErrors() {
+    const of = (diagnostics, v) => v.shadetreeId ? diagnostics.filter((diagnostic) => diagnostic.node === v.shadetreeId) : [];
     for (const v of this.graph._nodes) {
-      const wrong = Boolean(diagnostic && v.shadetreeId && v.shadetreeId === diagnostic.node);
+      const stopping = of(this.state.errors, v);
+      const faults = stopping.length ? stopping : of(this.state.unreadErrors, v);
+      const wrong = faults.length > 0;
+      const [color, bgcolor] = stopping.length ? ["#8a2c2c", "#4a1f1f"] : ["#8a6a2c", "#4a3a1f"];
       if (!v.boundary) {
         v.color = wrong ? color : undefined;
         v.bgcolor = wrong ? bgcolor : undefined;
       }
       for (const slot of v.inputs || []) {
-        const wrongInput = wrong && slot.name === diagnostic.input;
+        const wrongInput = faults.some((diagnostic) => slot.name === diagnostic.input);
         slot.color_on = wrongInput ? "#ff5555" : undefined;
         slot.color_off = wrongInput ? "#ff5555" : undefined;
         slot.label = slot.label.replace(/ ⚠$/, "") + (wrongInput ? " ⚠" : "");

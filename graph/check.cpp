@@ -18,6 +18,10 @@ struct CheckError {
   Diagnostic diagnostic;
 };
 
+// A node that reads a faulty node, or calls a faulty function, is not
+// checked: its own fault would only repeat the first one.
+struct FollowsFromAFault {};
+
 std::string join_names(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
@@ -38,28 +42,49 @@ class Checker {
  public:
   Checker(const Graph& graph, const GraphFiles& files) : graph_(graph), files_(files) {}
 
+  // The checked graph, complete only if faults() is empty.
   CheckedGraph run(std::shared_ptr<const Graph> graph) {
-    for (std::size_t i = 0; i < graph_.params.size(); ++i) check_param_declaration(graph_.params[i]);
+    for (std::size_t i = 0; i < graph_.params.size(); ++i)
+      collect_faults([&] { check_param_declaration(graph_.params[i]); });
     for (std::size_t i = 0; i < graph_.functions.size(); ++i) {
       const FunctionDef& function = graph_.functions[i];
       if (find_op(function.name))
-        fail({}, {}, "function \"" + function.name + "\" has the name of a library op; rename it");
+        collect_faults([&] { fail({}, {}, "function \"" + function.name + "\" has the name of a library op; rename it"); });
       function_index_[function.name] = static_cast<int>(i);
     }
     functions_.resize(graph_.functions.size());
     function_state_.assign(graph_.functions.size(), State::unvisited);
-    for (std::size_t i = 0; i < graph_.functions.size(); ++i) check_function(static_cast<int>(i));
+    for (std::size_t i = 0; i < graph_.functions.size(); ++i)
+      collect_faults([&] { check_function(static_cast<int>(i)); });
 
     CheckedGraph result;
     result.graph = std::move(graph);
     result.main = check_body(graph_.nodes, graph_.outputs, nullptr);
     result.functions = std::move(functions_);
-    check_outputs(result.main);
+    collect_faults([&] { check_outputs(result.main); });
     return result;
   }
 
+  // In the order the checker met them (parameters, functions, then the
+  // main graph's nodes in dependency order).
+  const std::vector<Diagnostic>& faults() const { return faults_; }
+
  private:
-  enum class State { unvisited, in_progress, done };
+  enum class State { unvisited, in_progress, done, faulty };
+
+  // Runs `check`, keeping its fault (up to max_check_faults) and going on.
+  // Returns whether it passed.
+  template <class Check>
+  bool collect_faults(Check check) {
+    try {
+      check();
+      return true;
+    } catch (const CheckError& error) {
+      if (++fault_count_ <= max_check_faults) faults_.push_back(error.diagnostic);
+    } catch (const FollowsFromAFault&) {
+    }
+    return false;
+  }
 
   [[noreturn]] void fail(const std::string& node, const std::string& input, const std::string& message) const {
     throw CheckError{Diagnostic{ExitStatus::invalid_input, graph_.file, node, input, message}};
@@ -74,17 +99,24 @@ class Checker {
 
   void check_function(int index) {
     if (function_state_[index] == State::done) return;
+    if (function_state_[index] == State::faulty) throw FollowsFromAFault{};
     const FunctionDef& function = graph_.functions[index];
     if (function_state_[index] == State::in_progress)
       fail({}, {}, "function \"" + function.name + "\" calls itself (directly or through other functions)");
-    if (++function_depth_ > max_function_nesting)
+    if (function_depth_ == max_function_nesting)
       fail({}, {}, "function \"" + function.name + "\" is nested more than " + std::to_string(max_function_nesting) +
                        " calls deep");
+    ++function_depth_;
     function_state_[index] = State::in_progress;
     functions_[index].definition = &function;
+    const std::size_t faults_before = fault_count_;
     functions_[index].body = check_body(function.nodes, function.outputs, &function);
-    function_state_[index] = State::done;
     --function_depth_;
+    if (fault_count_ > faults_before) {
+      function_state_[index] = State::faulty;
+      throw FollowsFromAFault{};
+    }
+    function_state_[index] = State::done;
   }
 
   Callee resolve_callee(const Node& node) {
@@ -123,37 +155,53 @@ class Checker {
     std::vector<int> order;          // dependency order of node indices
     std::vector<int> checked_index;  // node index -> position in order
     std::vector<CheckedNode> checked;
+    std::vector<bool> faulty;        // node index -> whether it or a node it reads has a fault
   };
 
+  // A body's nodes, each checked on its own: a fault is collected and the
+  // body goes on without the nodes that read the faulty one. A duplicate id
+  // or a cycle leaves no order to go on in: the body stops there.
   CheckedBody check_body(const std::vector<Node>& nodes, const std::vector<OutputDecl>& outputs,
                          const FunctionDef* function) {
-    Body body{&nodes, function, {}, {}, {}, {}, {}};
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      if (!body.index.emplace(nodes[i].id, static_cast<int>(i)).second)
-        fail(nodes[i].id, {}, "duplicate node id");
-    }
-    for (const Node& node : nodes) body.callees.push_back(resolve_callee(node));
-    order_nodes(body);
+    Body body{&nodes, function, {}, {}, {}, {}, {}, std::vector<bool>(nodes.size(), false)};
+    CheckedBody result;
+    const bool ordered = collect_faults([&] {
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        if (!body.index.emplace(nodes[i].id, static_cast<int>(i)).second)
+          fail(nodes[i].id, {}, "duplicate node id");
+      }
+      order_nodes(body);
+    });
+    if (!ordered) return result;
+    body.callees.resize(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      body.faulty[i] = !collect_faults([&] { body.callees[i] = resolve_callee(nodes[i]); });
     body.checked_index.assign(nodes.size(), -1);
     for (int node_index : body.order) {
       body.checked_index[node_index] = static_cast<int>(body.checked.size());
-      body.checked.push_back(check_node(body, node_index));
+      body.checked.emplace_back();
+      if (body.faulty[node_index] || reads_a_faulty_node(body, nodes[node_index].inputs)) {
+        body.faulty[node_index] = true;
+        continue;
+      }
+      body.faulty[node_index] = !collect_faults([&] { body.checked.back() = check_node(body, node_index); });
     }
-    CheckedBody result;
     for (const OutputDecl& output : outputs) {
-      CheckedSource source = resolve_source(body, output.source, {}, "output \"" + output.name + "\"");
-      result.outputs.push_back({output.name, source});
+      if (reads_a_faulty_node(body, {{output.name, output.source}})) continue;
+      collect_faults([&] {
+        result.outputs.push_back({output.name, resolve_source(body, output.source, {}, "output \"" + output.name + "\"")});
+      });
     }
     result.nodes = std::move(body.checked);
     return result;
   }
 
-  int referenced_node(const Body& body, const Node& node, const std::string& input, const InputValue& value) const {
-    auto found = body.index.find(value.node);
-    if (found == body.index.end())
-      fail(node.id, input, "no node \"" + value.node + "\"" +
-                               (body.function ? " in function \"" + body.function->name + "\"" : ""));
-    return found->second;
+  static bool reads_a_faulty_node(const Body& body, const std::vector<std::pair<std::string, InputValue>>& inputs) {
+    return std::any_of(inputs.begin(), inputs.end(), [&](const auto& input) {
+      if (input.second.kind != InputValue::Kind::node) return false;
+      auto found = body.index.find(input.second.node);
+      return found != body.index.end() && body.faulty[found->second];
+    });
   }
 
   // Depth-first topological order; a back edge is a cycle, reported with
@@ -182,7 +230,9 @@ class Checker {
         }
         const auto& [input, value] = node.inputs[frame.next_input++];
         if (value.kind != InputValue::Kind::node) continue;
-        const int next = referenced_node(body, node, input, value);
+        auto found = body.index.find(value.node);
+        if (found == body.index.end()) continue;  // check_node reports it
+        const int next = found->second;
         if (state[next] == State::done) continue;
         if (state[next] == State::in_progress) {
           std::string cycle;
@@ -485,8 +535,8 @@ class Checker {
                          type_text(output.source.type));
     }
     for (const OutputSpec& spec : output_contract(graph_.kind)) {
-      const bool present = std::any_of(body.outputs.begin(), body.outputs.end(),
-                                       [&](const CheckedOutput& output) { return output.name == spec.name; });
+      const bool present = std::any_of(graph_.outputs.begin(), graph_.outputs.end(),
+                                       [&](const OutputDecl& output) { return output.name == spec.name; });
       if (spec.required && !present)
         fail({}, {}, a_graph_of(graph_.kind) + " needs an output \"" + std::string(spec.name) + "\"");
     }
@@ -499,17 +549,24 @@ class Checker {
   std::vector<CheckedFunction> functions_;
   std::vector<State> function_state_;
   int function_depth_ = 0;
+  std::vector<Diagnostic> faults_;
+  std::size_t fault_count_ = 0;  // faults_ and those beyond max_check_faults
 };
 
 }  // namespace
 
 
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const GraphFiles& files) {
-  try {
-    return Checker(*graph, files).run(graph);
-  } catch (const CheckError& error) {
-    return error.diagnostic;
-  }
+  Checker checker(*graph, files);
+  CheckedGraph checked = checker.run(graph);
+  if (!checker.faults().empty()) return checker.faults().front();
+  return checked;
+}
+
+std::vector<Diagnostic> check_faults(std::shared_ptr<const Graph> graph, const GraphFiles& files) {
+  Checker checker(*graph, files);
+  checker.run(graph);
+  return checker.faults();
 }
 
 Result<std::vector<float>> parse_param_value(const ParamDecl& param, const std::string& text) {

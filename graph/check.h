@@ -80,7 +80,15 @@ struct GraphFiles {
   DistanceGridReader distance_grid;
 };
 
+// The checked graph, or the first of its faults.
 Result<CheckedGraph> check_graph(std::shared_ptr<const Graph> graph, const GraphFiles& files = {});
+
+// Every fault of the graph (up to max_check_faults), found in one pass: the
+// first is the one check_graph reports. A node that reads a faulty node is
+// not checked, so a fault is not repeated down the graph; a duplicate id or
+// a cycle stops its body's check. Empty when the graph checks.
+inline constexpr std::size_t max_check_faults = 100;
+std::vector<Diagnostic> check_faults(std::shared_ptr<const Graph> graph, const GraphFiles& files = {});
 
 
 // Validates a value given for a param (from --set or an editor) against

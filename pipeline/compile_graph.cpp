@@ -93,4 +93,11 @@ Result<LoadedGraph> compile_graph_text(const std::string& json, const std::strin
   return compile_parsed(parse_graph(json, file), file, assignments, observe, files);
 }
 
+std::vector<Diagnostic> every_fault(const Result<Graph>& parsed, const Diagnostic& failure, const GraphFiles& files) {
+  if (!parsed) return {failure};
+  std::vector<Diagnostic> faults = check_faults(std::make_shared<const Graph>(*parsed), files);
+  if (faults.empty()) return {failure};
+  return faults;
+}
+
 }  // namespace shadetree

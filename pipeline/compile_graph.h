@@ -42,4 +42,11 @@ Result<LoadedGraph> compile_graph_text(const std::string& json, const std::strin
                                        const std::vector<std::string>& assignments = {},
                                        const PassObserver& observe = {}, const GraphFiles& files = {});
 
+// Every fault of a graph that failed to compile with `failure`: those the
+// checker finds in `parsed` (check_faults) when the check is what failed,
+// else `failure` alone (the file did not parse, or a later stage refused
+// it).
+std::vector<Diagnostic> every_fault(const Result<Graph>& parsed, const Diagnostic& failure,
+                                    const GraphFiles& files = {});
+
 }  // namespace shadetree

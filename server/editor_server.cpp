@@ -448,13 +448,16 @@ void EditorServer::add_check_route() {
     if (!path) return send_error(response, 400, path.error().message);
     // The editor opens a graph with a check error, to mend it, but not a
     // file that does not parse as one: the canvas could not show it.
-    const auto refused = [&](bool parsed, const Diagnostic& error) {
-      send_json(response, {{"ok", false}, {"parsed", parsed}, {"error", diagnostic_json(relative_to(graphs_, error))}});
+    // "error" is the fault to mend first; "errors" all that were found.
+    const auto refused = [&](bool parsed, const std::vector<Diagnostic>& faults) {
+      nlohmann::json errors = nlohmann::json::array();
+      for (const Diagnostic& fault : faults) errors.push_back(diagnostic_json(relative_to(graphs_, fault)));
+      send_json(response, {{"ok", false}, {"parsed", parsed}, {"error", errors.front()}, {"errors", errors}});
     };
     Result<Graph> parsed = parse_graph(request.body, path->string());
-    if (!parsed) return refused(false, parsed.error());
-    Result<LoadedGraph> loaded = compile_graph(std::move(*parsed), {}, files_);
-    if (!loaded) return refused(true, loaded.error());
+    if (!parsed) return refused(false, {parsed.error()});
+    Result<LoadedGraph> loaded = compile_graph(*parsed, {}, files_);
+    if (!loaded) return refused(true, every_fault(parsed, loaded.error(), files_));
     send_json(response, {{"ok", true}});
   });
 }

@@ -189,6 +189,57 @@ TEST(Check, ChecksFunctionsAndTheirCalls) {
             "error: g.json: function \"f\" calls itself (directly or through other functions)");
 }
 
+// Every fault of a graph, one line each, in the order the checker meets
+// them; what follows from a fault is not reported again.
+std::vector<std::string> faults_of(const std::string& text) {
+  Result<Graph> parsed = parse_graph(text, "g.json");
+  EXPECT_TRUE(parsed) << parsed.error().to_string();
+  auto graph = std::make_shared<const Graph>(*parsed);
+  std::vector<std::string> lines;
+  for (const Diagnostic& fault : check_faults(graph)) lines.push_back(fault.to_string());
+  Result<CheckedGraph> checked = check_graph(graph);
+  EXPECT_EQ(checked ? "ok" : checked.error().to_string(), lines.empty() ? "ok" : lines.front());
+  return lines;
+}
+
+TEST(CheckFaults, ReportsEveryIndependentFaultOnce) {
+  using Lines = std::vector<std::string>;
+  EXPECT_EQ(faults_of(graph_text(R"({"id": "p", "op": "P"}, {"id": "u", "op": "uv"},
+                                    {"id": "n", "op": "noise", "in": {"p": "u"}},
+                                    {"id": "m", "op": "mul", "in": {"a": "n", "b": 2}},
+                                    {"id": "t", "op": "turbulence", "in": {"p": "p", "octaves": 40}},
+                                    {"id": "x", "op": "nois", "in": {"p": "p"}},
+                                    {"id": "c", "op": "color", "in": {"r": "m", "g": "t", "b": "$nope"}})",
+                                 color_out)),
+            (Lines{"error: g.json: node \"x\": unknown op \"nois\" (see `shadetree nodes` for the library)",
+                   "error: g.json: node \"n\" input \"p\": expected vec3, got vec2",
+                   "error: g.json: node \"t\" input \"octaves\": octaves must be between 0 and 16, got 40"}));
+  EXPECT_EQ(faults_of(graph_text(R"({"id": "c", "op": "color", "in": {"r": "gone", "g": "$nope"}})", color_out)),
+            (Lines{"error: g.json: node \"c\" input \"r\": no node \"gone\""}));
+  EXPECT_TRUE(faults_of(graph_text(R"({"id": "c", "op": "color", "in": {"r": 1}})", color_out)).empty());
+}
+
+TEST(CheckFaults, AFaultyFunctionIsReportedOnceAndNotAtItsCalls) {
+  const std::string functions = R"("functions": {"f": {"inputs": {"x": "float"},
+      "nodes": [{"id": "d", "op": "mul", "in": {"a": "$x", "b": "$y"}}], "outputs": {"y": "d"}}},)";
+  EXPECT_EQ(faults_of(graph_text(R"({"id": "a", "op": "f", "in": {"x": 1}}, {"id": "b", "op": "f", "in": {"x": 2}},
+                                    {"id": "c", "op": "color", "in": {"r": "a", "g": "b", "b": [1, 2]}})",
+                                 color_out, functions)),
+            (std::vector<std::string>{
+                "error: g.json: node \"d\" input \"b\": function \"f\" has no input \"y\" (functions see only their "
+                "inputs: pass params in as inputs)"}));
+}
+
+TEST(CheckFaults, ACycleStopsItsBodyAndFaultsAreBounded) {
+  EXPECT_EQ(faults_of(graph_text(R"({"id": "a", "op": "abs", "in": {"x": "b"}}, {"id": "b", "op": "abs", "in": {"x": "a"}},
+                                    {"id": "c", "op": "nois"})",
+                                 color_out)),
+            (std::vector<std::string>{"error: g.json: node \"a\": cycle: a -> b -> a"}));
+  std::string nodes = R"({"id": "c", "op": "color"})";
+  for (int i = 0; i < 150; ++i) nodes += R"(, {"id": "x)" + std::to_string(i) + R"(", "op": "nois"})";
+  EXPECT_EQ(faults_of(graph_text(nodes, color_out)).size(), max_check_faults);
+}
+
 TEST(Check, FunctionOutputsKeepFileOrder) {
   const std::string functions = R"("functions": {"polar": {"inputs": {"x": "float"},
       "nodes": [{"id": "r", "op": "abs", "in": {"x": "$x"}}, {"id": "a", "op": "vec2", "in": {"x": "$x"}}],

@@ -86,6 +86,22 @@ TEST_F(Cli, InvalidGraphsExitWithTwoAndOneLine) {
   EXPECT_EQ(run.err, "error: " + graph.string() + ": node \"t2\" input \"p\": expected vec3, got vec2\n");
 }
 
+TEST_F(Cli, CheckReportsEveryFaultOfAGraphAndRenderTheFirst) {
+  const fs::path graph = write("two.json", R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+      "nodes": [{"id": "p", "op": "P"}, {"id": "u", "op": "uv"}, {"id": "n", "op": "noise", "in": {"p": "u"}},
+                {"id": "t", "op": "turbulence", "in": {"p": "p", "octaves": 40}},
+                {"id": "c", "op": "color", "in": {"r": "n", "g": "t"}}],
+      "outputs": {"color": "c"}})");
+  const std::string first = "error: " + graph.string() + ": node \"n\" input \"p\": expected vec3, got vec2\n";
+  const CommandResult check = shadetree("check " + graph.string());
+  EXPECT_EQ(check.status, 2);
+  EXPECT_EQ(check.err, first + "error: " + graph.string() +
+                           ": node \"t\" input \"octaves\": octaves must be between 0 and 16, got 40\n");
+  const CommandResult render = shadetree("render " + graph.string() + " -o " + (directory_ / "two.png").string());
+  EXPECT_EQ(render.status, 2);
+  EXPECT_EQ(render.err, first);
+}
+
 TEST_F(Cli, MissingFilesAndUsageErrorsExitWithTwo) {
   CommandResult run = shadetree("check " + (directory_ / "absent.json").string());
   EXPECT_EQ(run.status, 2);

@@ -340,6 +340,19 @@ TEST_F(EditorServerTest, ChecksGraphsWithTheCommandLinesDiagnostics) {
   ASSERT_FALSE(cli.ok());
   EXPECT_EQ(json["error"]["text"], cli.error().to_string())
       << "the command line's text, naming the file as the page does";
+  ASSERT_EQ(json["errors"].size(), 1u);
+  EXPECT_EQ(json["errors"][0], json["error"]);
+
+  // Two faults: both are answered, the first as "error".
+  const std::string twice = std::regex_replace(wrong, std::regex("\\{\"id\": \"p\", \"op\": \"P\"\\},"),
+                                               R"({"id": "p", "op": "P"}, {"id": "x", "op": "nois"},)");
+  ASSERT_NE(twice, wrong);
+  const auto both =
+      nlohmann::json::parse(client_->Post("/api/check?path=waves.json", headers_, twice, "application/json")->body);
+  ASSERT_EQ(both["errors"].size(), 2u) << both.dump();
+  EXPECT_EQ(both["errors"][0], both["error"]);
+  EXPECT_EQ(both["errors"][0]["node"], "x");
+  EXPECT_EQ(both["errors"][1]["node"], "s");
 }
 
 // Where the served folder is on the server's disk is not shown to the

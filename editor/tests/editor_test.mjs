@@ -245,12 +245,12 @@ try {
   // and the checker says so there; undo brings the int back.
   await page.click('button[title="edit param octaves"]');
   await page.select('select[name="octaves.type"]', "float");
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError?.node === "turb", { timeout: 10000 });
-  const retyped = await page.evaluate(() => window.shadetreeEditor.state.lastError);
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors[0]?.node === "turb", { timeout: 10000 });
+  const retyped = await page.evaluate(() => window.shadetreeEditor.state.errors[0]);
   assert.equal(retyped.input, "octaves", retyped.text);
   assert.equal((await paramsOf()).octaves.type, "float");
   await pressKeys("Control", "z");
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 10000 });
   assert.equal((await paramsOf()).octaves.type, "int");
   await page.click('button[title="edit param octaves"]');  // closed again: the panel below stays in view
   console.log(`retyped octaves as float: ${retyped.text.replace(/^.*: node/, "node")}; undo made it an int again`);
@@ -306,17 +306,33 @@ try {
   await page.select("#palette", "uv");
   await page.click("#add-node");
   await page.evaluate(() => window.shadetreeEditor.connect("uv1", "out", "noise1", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError !== null, { timeout: 10000 });
-  const error = await page.evaluate(() => window.shadetreeEditor.state.lastError);
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length > 0, { timeout: 10000 });
+  const error = await page.evaluate(() => window.shadetreeEditor.state.errors[0]);
   assert.equal(error.node, "noise1");
   assert.equal(error.input, "p");
   assert.match(error.message, /vec3/);
   assert.equal(await page.evaluate(() => window.shadetreeEditor.graph._nodes.find((v) => v.shadetreeId === "noise1").inputs[0].label), "p: vec3 ⚠");
   console.log(`wired uv1 (vec2) into noise1.p (vec3): ${error.text}`);
 
+  // A second fault, in turb, which no output reads since noise1 took its
+  // place in stirred.a: shown too, in amber beside noise1's red.
+  await page.evaluate(() => window.shadetreeEditor.connect("uv1", "out", "turb", "p"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 1, { timeout: 10000 });
+  const shown = await page.evaluate(() => {
+    const { state, graph } = window.shadetreeEditor;
+    const view = (id) => graph._nodes.find((v) => v.shadetreeId === id);
+    return { errors: state.errors.map((e) => `${e.node}.${e.input}`), unread: state.unreadErrors.map((e) => `${e.node}.${e.input}`),
+             colors: [view("noise1").color, view("turb").color], label: view("turb").inputs.find((slot) => slot.name === "p").label };
+  });
+  assert.deepEqual(shown, { errors: ["noise1.p"], unread: ["turb.p"], colors: ["#8a2c2c", "#8a6a2c"], label: "p: vec3 ⚠" });
+  assert.equal((await page.$eval("#diagnostic", (e) => e.textContent)).split("\n").length, 2);
+  await page.evaluate(() => window.shadetreeEditor.connect("p", "out", "turb", "p"));
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 0, { timeout: 10000 });
+  console.log("wired uv1 into turb.p, which no output reads: both faults shown, noise1's red and turb's amber");
+
   // Back to a valid graph, save, and check the file.
   await page.evaluate(() => window.shadetreeEditor.connect("p", "out", "noise1", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 10000 });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.save()), true);
   const check = spawnSync(binary, ["check", join(folder, "marble.json")], { encoding: "utf8" });
   assert.equal(check.status, 0, check.stderr);
@@ -339,7 +355,7 @@ try {
   await page.click('button[title^="add an input"]');
   await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeInput);
   assert.deepEqual((await inputsOf()).gain, { type: "float", default: 0.5 });
-  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.lastError), null, "calls stay valid");
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.errors.length), 0, "calls stay valid");
   assert.match(await page.$eval("#scope-signature", (e) => e.textContent), /gain/);
   await page.select('select[name="input gain.type"]', "vec2");
   assert.deepEqual((await inputsOf()).gain, { type: "vec2", default: [0.5, 0.5] });
@@ -655,7 +671,7 @@ try {
   assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05", "the panel follows undo");
   await pressKeys("Control", "Shift", "z");
   await pressKeys("Control", "Shift", "z");
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null && window.shadetreeEditor.state.previews > 0,
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0 && window.shadetreeEditor.state.previews > 0,
                              { timeout: 10000 });
   const withConstants = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
   const changedByConstants = original.flatMap((line, i) => (line === withConstants[i] ? [] : [withConstants[i]]));
@@ -676,7 +692,7 @@ try {
   assert.deepEqual(promoted, { param: { type: "float", default: 1.2, min: 0, max: 2.4 }, radius: "$ball_radius" });
   await page.waitForSelector('#params input[name="ball_radius"]', { timeout: 5000 });
   assert.equal(await page.$('input[name="ball.radius"]'), null, "the input reads the param: no constant field");
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n && window.shadetreeEditor.state.lastError === null,
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n && window.shadetreeEditor.state.errors.length === 0,
                              { timeout: 10000 }, beforePromotion);
   await pressKeys("Control", "z");
   assert.equal((await ballInputs()).radius, 1.2, "undo takes the param away again");
@@ -846,15 +862,15 @@ try {
   assert.ok(placeOfTurbulence[0] > placeOfP[0] + 100, `turbulence1 lands right of P1 (${placeOfP}, ${placeOfTurbulence})`);
   await wire("P1", "out", "turbulence1", "p");
   await wire("turbulence1", "out", "#outputs", "color");
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null && window.shadetreeEditor.state.previews > 0,
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0 && window.shadetreeEditor.state.previews > 0,
                              { timeout: 10000 });
   const previewsBeforeUnread = await page.evaluate(() => window.shadetreeEditor.state.previews);
   // A node nothing reads, with an input missing: a warning on it, while
   // the preview and the thumbnails go on.
   await page.mouse.click(host.x + 60, host.y + 400);
   await addWithPalette("mul");
-  await page.waitForFunction(() => window.shadetreeEditor.state.unreadError?.node === "mul1", { timeout: 10000 });
-  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.lastError), null, "an unread node does not stop the preview");
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors[0]?.node === "mul1", { timeout: 10000 });
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.state.errors.length), 0, "an unread node does not stop the preview");
   // The status follows the preview of what the outputs read.
   await page.waitForFunction(() => !document.getElementById("status").classList.contains("error"), { timeout: 10000 })
     .catch(async () => assert.fail(`the status is no error (${await page.$eval("#status", (element) => element.textContent)})`));
@@ -881,7 +897,7 @@ try {
   await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes("density"), { timeout: 5000 });
   assert.deepEqual((await newDoc()).render?.volume?.bounds, { min: [-1, -1, -1], max: [1, 1, 1] }, "a volume gets bounds");
   await page.select('select[name="graph kind"]', "texture");
-  await page.waitForFunction(() => window.shadetreeEditor.state.lastError === null, { timeout: 5000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 5000 });
   assert.equal((await newDoc()).render, undefined, "a texture keeps no volume");
   // Ctrl+drag draws a box: the nodes in it are selected.
   const [pTitle, turbulenceTitleBefore] = [await titlePoint("P1"), await titlePoint("turbulence1")];
