@@ -72,4 +72,20 @@ llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& m
   return builder.CreateZExt(builder.CreateShuffleVector(chosen, first16), ints);
 }
 
+llvm::Value* x86_small_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                                    llvm::Value* size, llvm::Value* index) {
+  auto* vector = llvm::FixedVectorType::get(builder.getFloatTy(), 16);
+  std::vector<llvm::Constant*> lanes;
+  for (int lane = 0; lane < 16; ++lane) lanes.push_back(builder.getInt32(lane));
+  llvm::Value* lane = llvm::ConstantVector::get(lanes);
+  llvm::Value* sizes = builder.CreateVectorSplat(16, size);
+  auto half = [&](int first) {
+    llvm::Value* inside = builder.CreateICmpSLT(builder.CreateAdd(lane, builder.CreateVectorSplat(16, builder.getInt32(first))), sizes);
+    return builder.CreateMaskedLoad(vector, builder.CreateConstGEP1_32(builder.getFloatTy(), table, first),
+                                    llvm::Align(4), inside, llvm::Constant::getNullValue(vector));
+  };
+  llvm::Function* permute = llvm::Intrinsic::getDeclaration(&module, llvm::Intrinsic::x86_avx512_vpermi2var_ps_512);
+  return builder.CreateCall(permute, {half(0), index, half(16)});
+}
+
 }  // namespace shadetree

@@ -26,4 +26,11 @@ llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Modul
 llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
                                    llvm::Value* index);
 
+// A float table of `size` <= x86_small_table_entries entries (a spline's
+// knots) in two registers, loaded under a mask so that nothing past its
+// end is read: one vpermt2ps on the index's low 5 bits.
+inline constexpr int x86_small_table_entries = 32;
+llvm::Value* x86_small_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                                    llvm::Value* size, llvm::Value* index);
+
 }  // namespace shadetree

@@ -242,5 +242,6 @@ inline Interval gather256(const float* table, IntervalInt index) {
 inline IntervalInt gather256(const std::int32_t* table, IntervalInt index) {
   return gather(table, {std::max(index.lo, 0), std::min(index.hi, 255)});
 }
+inline Interval gather_small(const float* table, std::int32_t, IntervalInt index) { return gather(table, index); }
 
 }  // namespace shadetree::lanes

@@ -69,6 +69,9 @@ inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { retu
 // noise tables, which a vector backend may hold in registers.
 inline float gather256(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather256(const std::int32_t* table, std::int32_t index) { return table[index]; }
+// Lookups in a float table of `size` entries, index in [0, size): a vector
+// backend may hold a small one (a spline's knots) in registers.
+inline float gather_small(const float* table, std::int32_t, std::int32_t index) { return table[index]; }
 
 template <class F>
 using IntOf = decltype(to_int(F{}));

@@ -124,6 +124,7 @@ inline intv gather(const std::int32_t* table, intv index) {
 }
 inline floatv gather256(const float* table, intv index) { return gather(table, index); }
 inline intv gather256(const std::int32_t* table, intv index) { return gather(table, index); }
+inline floatv gather_small(const float* table, std::int32_t, intv index) { return gather(table, index); }
 #endif
 
 }  // namespace shadetree::lanes

@@ -21,7 +21,9 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
   extern "C" void st_gather256_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);          \
-  extern "C" void st_gather256_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);
+  extern "C" void st_gather256_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);       \
+  extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
+                                           const intv<W>* index);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
@@ -65,6 +67,11 @@ SHADETREE_VECTOR_GATHERS(16)
   inline intv<W> gather256(const std::int32_t* table, intv<W> index) {                                      \
     intv<W> result;                                                                                          \
     st_gather256_i32_w##W(&result, table, &index);                                                           \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline floatv<W> gather_small(const float* table, std::int32_t size, intv<W> index) {                     \
+    floatv<W> result;                                                                                        \
+    st_gather_small_f32_w##W(&result, table, size, &index);                                                  \
     return result;                                                                                           \
   }
 

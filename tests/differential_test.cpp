@@ -180,6 +180,42 @@ TEST(NodeDifferential, ImagesAgreeInBothWrapModes) {
   for (int width : {4, 16}) EXPECT_EQ(compare_backends("images", loaded->ir, loaded->params, width), "");
 }
 
+// A spline's knots are looked up in registers where its table has at most
+// 32 entries (x86_small_table_entries), and gathered beyond: tables either
+// side of that size, float and color, in every basis, by every strategy.
+TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSize) {
+  auto knots = [](int count, int components) {
+    std::string text;
+    for (int k = 0; k < count; ++k) {
+      std::string knot;
+      for (int c = 0; c < components; ++c)
+        knot += (c ? ", " : "") + std::to_string(0.03 * k * k - 0.5 * c + 0.1 * ((k * 7 + c) % 5));
+      text += (k ? ", " : "") + (components == 1 ? knot : "[" + knot + "]");
+    }
+    return "[" + text + "]";
+  };
+  for (auto [count, components] : {std::pair{4, 1}, {16, 1}, {32, 1}, {33, 1}, {5, 3}, {10, 3}, {11, 3}}) {
+    std::string nodes;
+    const char* bases[] = {"catmull-rom", "linear", "step"};
+    for (int b = 0; b < 3; ++b)
+      nodes += R"(, {"id": "s)" + std::to_string(b) + R"(", "op": "spline", "in": {"x": "float_)" + "abc"[b] +
+               R"("}, "basis": ")" + bases[b] + R"(", "knots": )" + knots(count, components) + "}";
+    const std::string as_color = components == 1 ? R"({"id": "c", "op": "color", "in": {"r": "s0", "g": "s1", "b": "s2"}})"
+                                                 : R"({"id": "c", "op": "add", "in": {"a": "s0", "b": "s1"}})";
+    Result<LoadedGraph> loaded = compile_text(std::string(header) + R"("nodes": [)" + preamble + nodes + ", " +
+                                              as_color + R"(], "outputs": {"color": "c")" +
+                                              (components == 1 ? "" : R"(, "emission": "s2")") + "}}");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    const std::string name = "spline of " + std::to_string(count) + "x" + std::to_string(components);
+    EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 8), "");
+    if (host_vector_width() < 16) continue;
+    for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
+                                   GatherStrategy::in_register_byte_permutes})
+      EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 16, gathers), "")
+          << "gather strategy " << static_cast<int>(gathers);
+  }
+}
+
 TEST(NodeDifferential, ScalarArgumentsSplatToTheOpsType) {
   Result<LoadedGraph> loaded = compile_text(std::string(header) + R"("nodes": [{"id": "p", "op": "P"},
       {"id": "d", "op": "dot", "in": {"a": 1, "b": "p"}}, {"id": "l", "op": "normalize", "in": {"v": "p"}},
