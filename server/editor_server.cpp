@@ -83,9 +83,8 @@ void send_json(httplib::Response& response, const nlohmann::json& json) {
 // relative to it, as the page names files; where the folder is on the
 // server's disk is none of the page's business.
 Diagnostic relative_to(const ServedFolder& folder, Diagnostic diagnostic) {
-  const std::string root = (folder.path() / "").string();
-  for (std::string* text : {&diagnostic.file, &diagnostic.message})
-    for (std::size_t at; (at = text->find(root)) != std::string::npos;) text->erase(at, root.size());
+  diagnostic.file = folder.relative_text(std::move(diagnostic.file));
+  diagnostic.message = folder.relative_text(std::move(diagnostic.message));
   return diagnostic;
 }
 

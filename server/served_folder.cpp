@@ -1,6 +1,7 @@
 #include "server/served_folder.h"
 
 #include <algorithm>
+#include <string_view>
 
 #include "graph/file_path.h"
 
@@ -16,6 +17,17 @@ Result<ServedFolder> ServedFolder::open(const std::string& folder) {
   ServedFolder served;
   served.root_ = root;
   return served;
+}
+
+std::string ServedFolder::relative_text(std::string text) const {
+  const std::string root = (root_ / "").string();
+  for (std::size_t at = 0; (at = text.find(root, at)) != std::string::npos;) {
+    if (at == 0 || std::string_view(" \"'(").find(text[at - 1]) != std::string_view::npos)
+      text.erase(at, root.size());
+    else
+      at += root.size();
+  }
+  return text;
 }
 
 Result<fs::path> ServedFolder::resolve(const std::string& relative) const {

@@ -27,6 +27,12 @@ class ServedFolder {
 
   const std::filesystem::path& path() const { return root_; }
 
+  // `text` with the folder's path taken off every path it begins (at the
+  // start of the text, or after a space, quote or bracket), so that a
+  // message names files as the page does and does not show where the
+  // folder is on the server's disk.
+  std::string relative_text(std::string text) const;
+
  private:
   std::filesystem::path root_;
 };
