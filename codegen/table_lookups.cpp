@@ -87,7 +87,8 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
         } else if (in_register && table256) {
           result = x86_register_table_lookup(builder, module, is_float, table, index);
         } else {
-          result = memory_lookup(builder, in_register ? GatherStrategy::hardware : strategy, element, table, index, width);
+          const GatherStrategy memory = in_register ? GatherStrategy::hardware : strategy;
+          result = memory_lookup(builder, memory, element, table, index, width);
         }
         builder.CreateStore(result, out);
         builder.CreateRetVoid();

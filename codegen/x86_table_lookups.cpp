@@ -75,12 +75,12 @@ llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& m
 llvm::Value* x86_small_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
                                     llvm::Value* size, llvm::Value* index) {
   auto* vector = llvm::FixedVectorType::get(builder.getFloatTy(), 16);
-  std::vector<llvm::Constant*> lanes;
-  for (int lane = 0; lane < 16; ++lane) lanes.push_back(builder.getInt32(lane));
-  llvm::Value* lane = llvm::ConstantVector::get(lanes);
   llvm::Value* sizes = builder.CreateVectorSplat(16, size);
+  // Lane i of the half from `first` holds entry first + i, read where it is below the size.
   auto half = [&](int first) {
-    llvm::Value* inside = builder.CreateICmpSLT(builder.CreateAdd(lane, builder.CreateVectorSplat(16, builder.getInt32(first))), sizes);
+    std::vector<llvm::Constant*> entries;
+    for (int lane = 0; lane < 16; ++lane) entries.push_back(builder.getInt32(first + lane));
+    llvm::Value* inside = builder.CreateICmpSLT(llvm::ConstantVector::get(entries), sizes);
     return builder.CreateMaskedLoad(vector, builder.CreateConstGEP1_32(builder.getFloatTy(), table, first),
                                     llvm::Align(4), inside, llvm::Constant::getNullValue(vector));
   };

@@ -463,7 +463,8 @@ async function update() {
         const readCheck = await checkOf(JSON.stringify(read, null, 2));
         // Else the errors that stop what the outputs read are the ones to
         // mend; those of unread nodes are shown beside them.
-        const unread = check.errors.filter((error) => readCheck.ok || !readCheck.errors.some((e) => e.text === error.text));
+        const unread = readCheck.ok ? check.errors
+                     : check.errors.filter((error) => !readCheck.errors.some((e) => e.text === error.text));
         [check, previewed] = readCheck.ok ? [{ ok: true, unread }, read] : [{ ...readCheck, unread }, doc];
       }
       if (sequence !== state.sequence) return;

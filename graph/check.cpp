@@ -49,7 +49,8 @@ class Checker {
     for (std::size_t i = 0; i < graph_.functions.size(); ++i) {
       const FunctionDef& function = graph_.functions[i];
       if (find_op(function.name))
-        collect_faults([&] { fail({}, {}, "function \"" + function.name + "\" has the name of a library op; rename it"); });
+        collect_faults(
+            [&] { fail({}, {}, "function \"" + function.name + "\" has the name of a library op; rename it"); });
       function_index_[function.name] = static_cast<int>(i);
     }
     functions_.resize(graph_.functions.size());
@@ -189,7 +190,8 @@ class Checker {
     for (const OutputDecl& output : outputs) {
       if (reads_a_faulty_node(body, {{output.name, output.source}})) continue;
       collect_faults([&] {
-        result.outputs.push_back({output.name, resolve_source(body, output.source, {}, "output \"" + output.name + "\"")});
+        const std::string input = "output \"" + output.name + "\"";
+        result.outputs.push_back({output.name, resolve_source(body, output.source, {}, input)});
       });
     }
     result.nodes = std::move(body.checked);

@@ -250,7 +250,9 @@ inline TraceF gather(const float* table, const TraceI& index) { return traced_ga
 inline TraceI gather(const std::int32_t* table, const TraceI& index) { return traced_gather(table, index); }
 inline TraceF gather256(const float* table, const TraceI& index) { return traced_gather(table, index); }
 inline TraceI gather256(const std::int32_t* table, const TraceI& index) { return traced_gather(table, index); }
-inline TraceF gather_small(const float* table, std::int32_t, const TraceI& index) { return traced_gather(table, index); }
+inline TraceF gather_small(const float* table, std::int32_t, const TraceI& index) {
+  return traced_gather(table, index);
+}
 
 namespace trace_detail {
 // A loop state as a traced lane: traced lanes as they are, plain floats
