@@ -27,6 +27,9 @@ import { Thumbnails, thumbnailSide } from "./thumbnails.js";
 // How long after the last interactive edit a volume preview is refined to
 // full size; until then it renders at a fraction of it.
 const refineDelayMs = 250;
+// A 60 Hz frame: a texture slower than this to preview at full size (from
+// the request to the picture) is drawn at half size while dragged.
+const slowTextureMs = 16;
 // A volume's draft is half the full side, or a quarter when the full
 // preview takes over 150 ms (or has not been drawn yet), and smaller still
 // (down to 32, in steps of 16) where that would take longer than this:
@@ -404,26 +407,37 @@ async function checkOf(body) {
   return checks.get(key);
 }
 
-// Edits within 15 ms of the first one not yet drawn are drawn together.
-// The timer is not restarted by the next edit, so a drag whose events come
-// faster than that (a 120 Hz mouse) still draws as it goes.
+// An edit is drawn at once, unless a preview started moments ago is on its
+// way: the edits made meanwhile wait for it (patienceMs at most) and are
+// drawn together as soon as it lands. So a drag whose events come faster
+// than the previews (a 120 Hz mouse) draws as fast as they come back, with
+// one update waiting at a time.
 function scheduleUpdate({ interactive = false } = {}) {
   if (!state.doc) return;
   if (interactive) state.lastInteraction = performance.now();
-  pending ??= setTimeout(() => {
+  pending ??= (async () => {
+    await new Promise((resolve) => setTimeout(resolve, 0));  // the rest of this event's edits
+    const age = inflight ? performance.now() - inflight.started : Infinity;
+    if (age < patienceMs)
+      await Promise.race([inflight.done, new Promise((resolve) => setTimeout(resolve, patienceMs - age))]);
     pending = null;
     update();
-  }, 15);
+  })();
 }
 
 // Volume previews are slow: a graph's first picture, the pictures just
 // after an edit and those of a playing animation are drafts, smaller and
 // marched at a coarser step. On a pause they are refined step by step: a
 // small draft doubles up to the largest draft, then the preview is drawn
-// at full size and step.
+// at full size and step. A texture whose full preview took longer than
+// slowTextureMs is drawn at half its side while dragged, and refined on a
+// pause.
 function previewSide() {
   const full = state.previewSide;
-  if (state.doc.kind !== "volume") return full;
+  if (state.doc.kind !== "volume") {
+    const dragging = !state.playing && performance.now() - state.lastInteraction < refineDelayMs;
+    return dragging && state.fullPreviewMs > slowTextureMs ? full / 2 : full;
+  }
   const largest = state.fullPreviewMs === null || state.fullPreviewMs > 150 ? full / 4 : full / 2;
   const paused = !state.playing && performance.now() - state.lastInteraction >= refineDelayMs;
   if (paused && state.drawnSide !== null)

@@ -2,6 +2,7 @@
 
 #include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -212,6 +213,11 @@ class BoundedHttpServer final : public httplib::Server {
   // httplib's own loop over a connection's requests, with the limits.
   bool process_and_close_socket(socket_t socket) override {
     if (!on_connection_worker) return refuse(socket);
+    // Replies are sent as they are written: with Nagle's algorithm, a
+    // reply's last part waited for the browser's delayed acknowledgement
+    // of its first (7 ms of a 15 ms preview round trip in Chromium).
+    const int no_delay = 1;
+    ::setsockopt(socket, IPPROTO_TCP, TCP_NODELAY, &no_delay, sizeof no_delay);
     LimitedSocketStream stream(socket, limits_);
     bool served = true;
     for (int request = 1; served && request <= limits_.keep_alive_requests; ++request) {

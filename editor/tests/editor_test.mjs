@@ -200,6 +200,29 @@ try {
   assert.equal((await stats()).compiles, compilesBefore, "a param drag never recompiles");
   console.log("dragged the scale slider: preview changed, no compile");
 
+  // The same slider dragged for a second as a fast hand does, drawn by the
+  // server (the GPU box off; this Chromium composites in software, as a
+  // machine without a GPU does, where the page's WebGL 2 is SwiftShader's):
+  // marble's full preview takes longer than a 60 Hz frame here, so the
+  // drag draws half-size drafts and the pause after it the full size.
+  // Undone after, so the value is the one above's.
+  const draggedScale = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params.scale.default);
+  const gpuBox = await page.evaluate(() => document.getElementById("gpu").checked);
+  if (gpuBox) await page.click("#gpu");
+  await page.waitForFunction(() => document.getElementById("preview-info").textContent.includes("CPU") &&
+                                   window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
+  const serverDrag = await timedDrag("scale", page);
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === window.shadetreeEditor.state.previewSide &&
+                                   window.shadetreeEditor.state.latencies.every((entry) => !entry.gpu),
+                             { timeout: 10000 });
+  if (gpuBox) await page.click("#gpu");
+  await page.evaluate(() => window.shadetreeEditor.undo());
+  assert.equal(await page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params.scale.default), draggedScale,
+               "undo takes back the timed drag in one step");
+  assert.equal((await stats()).compiles, compilesBefore, "the timed drag never recompiled");
+  console.log(`latency from the hand, marble's scale dragged, drawn by the server in a page without a GPU (goals: 30 ms, 30/s): ` +
+              `median ${serverDrag.median?.toFixed(1)} ms, ${serverDrag.perSecond.toFixed(1)} previews/s`);
+
   // Drag node turb by its title: the move is a step of the history.
   await settled();
   const positionOf = (id) => page.evaluate((id) => [...window.shadetreeEditor.viewOf(id).pos], id);
@@ -1096,9 +1119,9 @@ try {
             `the view centred near the graph's top left corner: ${centre.map(Math.round)}`);
   console.log(`ocean.json zoomed to 1: the minimap shows, and a click on its corner centred the view ${centre.slice(0, 2).map(Math.round)} from the graph's top left`);
 
-  // Texture previews on the page's own GPU, in a second Chromium with
-  // WebGL 2 (SwiftShader): the one above runs without (--disable-gpu), so
-  // that it tests the server's previews.
+  // Texture previews on the page's own GPU, in a second Chromium whose page
+  // is composited on its GPU (ANGLE's SwiftShader): the one above
+  // (--disable-gpu) composites in software, though it has WebGL 2 too.
   const gpuBrowser = await puppeteer.launch({
     executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
     headless: true,
