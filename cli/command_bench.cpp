@@ -178,6 +178,7 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (arguments.gathers == "per-lane") settings.gathers = GatherStrategy::per_lane;
     if (arguments.gathers == "in-register") settings.gathers = GatherStrategy::in_register;
     if (arguments.gathers == "in-register-bytes") settings.gathers = GatherStrategy::in_register_byte_permutes;
+    if (arguments.gathers == "bytes-and-gathers") settings.gathers = GatherStrategy::byte_permutes_and_gathers;
     if (arguments.quick) settings.optimization = Optimization::quick;
     JitSettings cold_settings = settings;
     cold_settings.cold = true;
@@ -258,8 +259,8 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--repetitions", arguments->repetitions, "timed runs per measurement (default 7)")
       ->check(CLI::Range(1, 1000));
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
-  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register or in-register-bytes (default: the host's)")
-      ->check(CLI::IsMember({"hardware", "per-lane", "in-register", "in-register-bytes"}));
+  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register, in-register-bytes or bytes-and-gathers (default: the host's)")
+      ->check(CLI::IsMember({"hardware", "per-lane", "in-register", "in-register-bytes", "bytes-and-gathers"}));
   command->add_flag("--quick", arguments->quick,
                     "measure the JIT's quick kernels (the editor's first previews of an edit) instead of its full ones");
   command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });

@@ -44,9 +44,11 @@ UniformStateLayout uniform_state_layout(const ShadeIR& ir);
 // How the op library's table lookups become instructions: one hardware
 // gather per lookup (vgatherdps / vpgatherdd); one scalar load per lane; or,
 // at width 16 (AVX-512), permutes over the 256-entry noise tables held in
-// registers and hardware gathers for the other tables (splines); the last
-// also looks the noise permutation up as bytes (AVX-512 VBMI).
-enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes };
+// registers and hardware gathers for the other tables (splines); the same
+// with the noise permutation looked up as bytes (AVX-512 VBMI); or the
+// permutation as bytes and every float table by hardware gathers. Spline
+// knots (up to 32 floats) are in registers in the last three.
+enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes, byte_permutes_and_gathers };
 
 // The module holds the kernel's two functions (`function_name` + "_bind"
 // and "_run") and the op library they call, marked for inlining.

@@ -62,8 +62,11 @@ void define_small_table_lookup(llvm::Module& module, GatherStrategy strategy, in
 }  // namespace
 
 void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
-  const bool byte_permutes = strategy == GatherStrategy::in_register_byte_permutes;
-  const bool register_strategy = strategy == GatherStrategy::in_register || byte_permutes;
+  const bool byte_permutes = strategy == GatherStrategy::in_register_byte_permutes ||
+                             strategy == GatherStrategy::byte_permutes_and_gathers;
+  const bool float_tables_in_registers =
+      strategy == GatherStrategy::in_register || strategy == GatherStrategy::in_register_byte_permutes;
+  const bool register_strategy = float_tables_in_registers || byte_permutes;
   llvm::LLVMContext& context = module.getContext();
   for (int width : {4, 8, 16}) {
     const bool in_register = register_strategy && width == 16;
@@ -84,7 +87,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
         llvm::Value* result;
         if (in_register && table256 && byte_permutes && !is_float) {
           result = x86_byte_table_lookup(builder, module, table, index);
-        } else if (in_register && table256) {
+        } else if (in_register && table256 && float_tables_in_registers) {
           result = x86_register_table_lookup(builder, module, is_float, table, index);
         } else {
           const GatherStrategy memory = in_register ? GatherStrategy::hardware : strategy;

@@ -1,5 +1,10 @@
 #include "jit/host_target.h"
 
+#include <cpuid.h>
+
+#include <cstring>
+#include <string_view>
+
 #include <llvm/ADT/StringMap.h>
 #include <llvm/TargetParser/Host.h>
 #include <llvm/TargetParser/SubtargetFeature.h>
@@ -18,13 +23,32 @@ int host_vector_width() {
   return 4;
 }
 
-// Measured with `shadetree bench --gathers` (figures in docs/architecture.md):
-// per-lane loads beat vgatherdps on the x86 parts we have, permutes over
-// registers beat both where AVX-512 allows them, and byte permutes (VBMI)
-// do the noise permutation cheaper still.
+namespace {
+
+// Whether the host's CPU is AMD's (its CPUID vendor string).
+bool host_is_amd() {
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  if (!__get_cpuid(0, &eax, &ebx, &ecx, &edx)) return false;
+  char vendor[12];
+  std::memcpy(vendor, &ebx, 4);
+  std::memcpy(vendor + 4, &edx, 4);
+  std::memcpy(vendor + 8, &ecx, 4);
+  return std::string_view(vendor, 12) == "AuthenticAMD";
+}
+
+}  // namespace
+
+// Measured with `shadetree bench --gathers` on both vendors (figures in
+// docs/architecture.md, "Table lookups"): per-lane loads beat vgatherdps
+// without AVX-512. With it, AMD's gathers are slow and permutes over
+// registers win, the permutation as bytes (VBMI) cheapest; Intel's
+// gathers beat the permute tree over sixteen registers of a float table,
+// so there only the permutation is held in registers.
 GatherStrategy host_gather_strategy() {
   if (host_vector_width() < 16) return GatherStrategy::per_lane;
-  return host_has("avx512vbmi") ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
+  const bool vbmi = host_has("avx512vbmi");
+  if (host_is_amd()) return vbmi ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
+  return vbmi ? GatherStrategy::byte_permutes_and_gathers : GatherStrategy::hardware;
 }
 
 std::string host_cpu_name() { return llvm::sys::getHostCPUName().str(); }

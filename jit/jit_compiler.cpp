@@ -62,10 +62,14 @@ namespace {
 // without it, whatever the settings ask for.
 GatherStrategy effective_gathers(const JitSettings& settings) {
   const GatherStrategy wanted = settings.gathers.value_or(host_gather_strategy());
-  const bool needs_avx512 =
-      wanted == GatherStrategy::in_register || wanted == GatherStrategy::in_register_byte_permutes;
+  const bool needs_avx512 = wanted == GatherStrategy::in_register ||
+                            wanted == GatherStrategy::in_register_byte_permutes ||
+                            wanted == GatherStrategy::byte_permutes_and_gathers;
   if (needs_avx512 && host_vector_width() < 16) return GatherStrategy::per_lane;
-  if (wanted == GatherStrategy::in_register_byte_permutes && !host_has("avx512vbmi")) return GatherStrategy::in_register;
+  if (!host_has("avx512vbmi")) {
+    if (wanted == GatherStrategy::in_register_byte_permutes) return GatherStrategy::in_register;
+    if (wanted == GatherStrategy::byte_permutes_and_gathers) return GatherStrategy::hardware;
+  }
   return wanted;
 }
 

@@ -89,7 +89,7 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
       << "quick kernel";
   if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
   for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
-                                 GatherStrategy::in_register_byte_permutes})
+                                 GatherStrategy::in_register_byte_permutes, GatherStrategy::byte_permutes_and_gathers})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 16, gathers), "")
         << "gather strategy " << static_cast<int>(gathers);
 }
@@ -210,7 +210,8 @@ TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSize) {
     EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 8), "");
     if (host_vector_width() < 16) continue;
     for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
-                                   GatherStrategy::in_register_byte_permutes})
+                                   GatherStrategy::in_register_byte_permutes,
+                                   GatherStrategy::byte_permutes_and_gathers})
       EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 16, gathers), "")
           << "gather strategy " << static_cast<int>(gathers);
   }
