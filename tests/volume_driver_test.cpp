@@ -14,6 +14,7 @@
 #include "io/graph_files.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
+#include "render/graph_kinds.h"
 #include "render/volume_driver.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
@@ -491,6 +492,40 @@ TEST(VolumeDriver, SkippingEmptySpaceChangesNoPixel) {
               render(**compiled, *loaded, scene, volume, 48, marching).pixels)
         << name;
     EXPECT_GT(stats.skipped_samples, 0) << name;
+  }
+}
+
+// A sequence's frames share one renderer, which remembers a frame's
+// verdict that skipping would not pay (the fireball's own `if` passes
+// over its empty space) and neither bounds nor times the later frames
+// again: their pixels are those of a renderer of their own.
+TEST(VolumeDriver, ASequenceBoundsItsEmptySpaceOnceWhereSkippingWouldNotPay) {
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/fireball.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::unique_ptr<Kernel>> compiled = make_jit_kernel(loaded->ir);
+  ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+  RenderRequest request;
+  request.size = {40, 40};
+  const auto renderer = [&] {
+    Result<std::unique_ptr<FrameRenderer>> prepared = prepare_render(*loaded->graph, request);
+    EXPECT_TRUE(prepared.ok()) << prepared.error().to_string();
+    return std::move(*prepared);
+  };
+  const auto figure = [](const FrameReport& report, const std::string& name) {
+    for (const auto& [key, value] : report.figures)
+      if (key == name) return value;
+    return -1.0;
+  };
+  const std::unique_ptr<FrameRenderer> sequence = renderer();
+  FrameReport first, second;
+  Result<Image> frame0 = sequence->render(**compiled, loaded->params, 0.0f, {}, &first);
+  Result<Image> frame1 = sequence->render(**compiled, loaded->params, 1.0f, {}, &second);
+  ASSERT_TRUE(frame0.ok() && frame1.ok());
+  EXPECT_EQ(frame1->pixels, (*renderer()->render(**compiled, loaded->params, 1.0f, {}, nullptr)).pixels);
+  EXPECT_EQ(figure(first, "skipped_samples"), 0.0);
+  if (first.what.find("evaluates it for next to nothing") != std::string::npos) {
+    EXPECT_NE(second.what.find("as an earlier frame found"), std::string::npos) << second.what;
+    EXPECT_EQ(figure(second, "bounds_s"), 0.0);
   }
 }
 
