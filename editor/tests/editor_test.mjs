@@ -207,7 +207,7 @@ try {
   // drag draws half-size drafts and the pause after it the full size.
   // Undone after, so the value is the one above's.
   const draggedScale = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params.scale.default);
-  const gpuBox = await page.evaluate(() => document.getElementById("gpu").checked);
+  const gpuBox = await page.evaluate(() => window.shadetreeEditor.gpu.available && document.getElementById("gpu").checked);
   if (gpuBox) await page.click("#gpu");
   await page.waitForFunction(() => document.getElementById("preview-info").textContent.includes("CPU") &&
                                    window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
