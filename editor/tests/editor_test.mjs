@@ -398,6 +398,10 @@ try {
   const functionThumbnail = await page.waitForFunction(
     () => window.shadetreeEditor.thumbnails.cache.get("marble_color/ramp")?.image, { timeout: 20000 }).catch(() => null);
   assert.ok(functionThumbnail, "a thumbnail of the function's node ramp, at its call");
+  // The picture to come back to is the full-size one: the input edits
+  // above may still show a half-size draft, refined on their pause.
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === window.shadetreeEditor.state.previewSide,
+                             { timeout: 10000 });
   const beforeDrag = await previewPixels();
   const previewsBeforeDrag = await page.evaluate(() => window.shadetreeEditor.state.previews);
   const curve = await (await page.$(".curve-editor canvas")).boundingBox();
