@@ -246,11 +246,13 @@ std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
     return near + weight[2] * (far - near);
   };
   const auto across = [&](int j) {
-    return along(cell[0], j) + weight[0] * (along(cell[0] + 1, j) - along(cell[0], j));
+    const float first = along(cell[0], j);
+    return first + weight[0] * (along(cell[0] + 1, j) - first);
   };
   // Optical depth is what varies linearly across a uniform medium, as the
   // path length does, so it is what is interpolated.
-  const float depth = across(cell[1]) + weight[1] * (across(cell[1] + 1) - across(cell[1]));
+  const float first = across(cell[1]);
+  const float depth = first + weight[1] * (across(cell[1] + 1) - first);
   // Rays that disagree: an edge of a shadow passes between them, which
   // the interpolation would blur; the caller marches a shadow ray. Their
   // spread e^-least - e^-most = e^-least (1 - e^-(most - least)) is within
