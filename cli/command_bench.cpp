@@ -44,6 +44,14 @@ struct BenchArguments {
   bool quick = false;
 };
 
+// --gathers: the JIT's table lookup strategies by their names.
+const std::map<std::string, GatherStrategy> gather_strategies = {
+    {"hardware", GatherStrategy::hardware},
+    {"per-lane", GatherStrategy::per_lane},
+    {"in-register", GatherStrategy::in_register},
+    {"in-register-bytes", GatherStrategy::in_register_byte_permutes},
+    {"bytes-and-gathers", GatherStrategy::byte_permutes_and_gathers}};
+
 struct Samples {
   std::size_t count = 0;
   SampleBuffers input{0, {}};
@@ -174,11 +182,7 @@ ExitStatus bench(const BenchArguments& arguments) {
     auto view = texture_view(*loaded->graph, arguments.size, std::nullopt);
     if (!view) return report(view.error());
     JitSettings settings{false, {}, false, std::nullopt};
-    if (arguments.gathers == "hardware") settings.gathers = GatherStrategy::hardware;
-    if (arguments.gathers == "per-lane") settings.gathers = GatherStrategy::per_lane;
-    if (arguments.gathers == "in-register") settings.gathers = GatherStrategy::in_register;
-    if (arguments.gathers == "in-register-bytes") settings.gathers = GatherStrategy::in_register_byte_permutes;
-    if (arguments.gathers == "bytes-and-gathers") settings.gathers = GatherStrategy::byte_permutes_and_gathers;
+    if (!arguments.gathers.empty()) settings.gathers = gather_strategies.at(arguments.gathers);
     if (arguments.quick) settings.optimization = Optimization::quick;
     JitSettings cold_settings = settings;
     cold_settings.cold = true;
@@ -260,7 +264,7 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
       ->check(CLI::Range(1, 1000));
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
   command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register, in-register-bytes or bytes-and-gathers (default: the host's)")
-      ->check(CLI::IsMember({"hardware", "per-lane", "in-register", "in-register-bytes", "bytes-and-gathers"}));
+      ->check(CLI::IsMember(gather_strategies));
   command->add_flag("--quick", arguments->quick,
                     "measure the JIT's quick kernels (the editor's first previews of an edit) instead of its full ones");
   command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });
