@@ -407,22 +407,16 @@ async function checkOf(body) {
   return checks.get(key);
 }
 
-// An edit is drawn at once, unless a preview started moments ago is on its
-// way: the edits made meanwhile wait for it (patienceMs at most) and are
-// drawn together as soon as it lands. So a drag whose events come faster
-// than the previews (a 120 Hz mouse) draws as fast as they come back, with
-// one update waiting at a time.
+// Edits within 15 ms of the first one not yet drawn are drawn together.
+// The timer is not restarted by the next edit, so a drag whose events come
+// faster than that (a 120 Hz mouse) still draws as it goes.
 function scheduleUpdate({ interactive = false } = {}) {
   if (!state.doc) return;
   if (interactive) state.lastInteraction = performance.now();
-  pending ??= (async () => {
-    await new Promise((resolve) => setTimeout(resolve, 0));  // the rest of this event's edits
-    const age = inflight ? performance.now() - inflight.started : Infinity;
-    if (age < patienceMs)
-      await Promise.race([inflight.done, new Promise((resolve) => setTimeout(resolve, patienceMs - age))]);
+  pending ??= setTimeout(() => {
     pending = null;
     update();
-  })();
+  }, 15);
 }
 
 // Volume previews are slow: a graph's first picture, the pictures just
