@@ -1,4 +1,4 @@
-// ORC LLJIT for shade kernels: host CPU (jit/host_target.h), full O3
+// ORC LLJIT for shade kernels: host CPU (jit/host_target.h), full
 // pipeline or a quick one (jit/optimization_pipeline.h), and two caches.
 // In memory, compiled kernels are kept by a hash of the optimized ShadeIR
 // (and width and CPU), so a second compile of the same graph is a lookup;
@@ -46,7 +46,7 @@ inline constexpr int memory_cache_kernels = 64;
 // Kernels whose machine code is in the JIT now (cached or in use).
 long resident_kernel_count();
 
-// How hard the JIT works on a kernel. full: LLVM's O3 pipeline and its
+// How hard the JIT works on a kernel. full: an O3-like pipeline and the
 // optimizing code generator, for everything that runs for long. quick: the
 // op library inlined and cleaned up (SROA, CSE, CFG, dead code) and the
 // fast code generator, in about a quarter of the time, for code about 0.7x
