@@ -444,7 +444,7 @@ bool materialize_called(llvm::Module& module) {
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                          const std::string& function_name, GatherStrategy gathers) {
   if (width != 4 && width != 8 && width != 16) return invalid_input("vector width must be 4, 8 or 16");
-  std::unique_ptr<llvm::Module> module = load_op_library(context);
+  std::unique_ptr<llvm::Module> module = load_op_library(context, width);
   if (!module) return failure("the embedded op library bitcode is unreadable");
   module->setModuleIdentifier(function_name);
   define_table_lookups(*module, gathers);
@@ -468,8 +468,8 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   if (!run) return run.error();
   if (!materialize_called(*module)) return failure("the embedded op library bitcode is unreadable");
   outline_large_ops(*module);
-  // Drop the library functions this kernel never calls (other widths, other
-  // ops) before the optimizer spends time on them.
+  // Drop the library functions this kernel never calls (other ops, dual
+  // forms) before the optimizer spends time on them.
   for (bool erased = true; erased;) {
     erased = false;
     for (llvm::Function& function : llvm::make_early_inc_range(*module)) {

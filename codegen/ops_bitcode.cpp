@@ -1,9 +1,10 @@
 // The op library of the JIT, generated from the op list: every op's
-// semantics (nodes/ops/) instantiated over clang vector lanes of width 4, 8
-// and 16 through a VectorFrame. This file is compiled by clang to LLVM
-// bitcode at build time (see CMakeLists.txt), embedded in the shadetree
-// binary, linked into every kernel module and inlined there, so the JIT
-// computes exactly what the interpreter computes.
+// semantics (nodes/ops/) instantiated over clang vector lanes of width
+// SHADETREE_OP_LIBRARY_WIDTH (4, 8 or 16) through a VectorFrame. This file
+// is compiled by clang to LLVM bitcode once per width at build time (see
+// CMakeLists.txt), embedded in the shadetree binary, linked into every
+// kernel module of its width and inlined there, so the JIT computes
+// exactly what the interpreter computes.
 //
 // One calling convention for every op (ABI-neutral, since vectors are
 // never passed by value):
@@ -22,6 +23,8 @@
 namespace shadetree {
 namespace {
 
+static_assert(SHADETREE_OP_LIBRARY_WIDTH == 4 || SHADETREE_OP_LIBRARY_WIDTH == 8 || SHADETREE_OP_LIBRARY_WIDTH == 16,
+              "the op library is built for a vector width of 4, 8 or 16");
 static_assert(max_op_args == 6, "the op library's signature below has six argument pointers");
 
 template <class Op, int W>
@@ -60,10 +63,8 @@ using namespace shadetree;
     const DualV<W>* args[] = {a0, a1, a2, a3, a4, a5};                                                     \
     evaluate_dual<ops::name, W>(result, args, constants);                                                  \
   }
-#define ST_OP_4(name) ST_OP(name, 4) ST_DUAL_OP(name, 4)
-#define ST_OP_8(name) ST_OP(name, 8) ST_DUAL_OP(name, 8)
-#define ST_OP_16(name) ST_OP(name, 16) ST_DUAL_OP(name, 16)
+// W is expanded here, before ST_OP pastes it into names.
+#define ST_OP_AT(name, W) ST_OP(name, W) ST_DUAL_OP(name, W)
+#define ST_OP_AT_LIBRARY_WIDTH(name) ST_OP_AT(name, SHADETREE_OP_LIBRARY_WIDTH)
 
-SHADETREE_LIBRARY_OPS(ST_OP_4)
-SHADETREE_LIBRARY_OPS(ST_OP_8)
-SHADETREE_LIBRARY_OPS(ST_OP_16)
+SHADETREE_LIBRARY_OPS(ST_OP_AT_LIBRARY_WIDTH)
