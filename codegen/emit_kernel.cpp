@@ -242,7 +242,7 @@ class KernelEmitter {
     auto found = tables_.find(seed);
     if (found != tables_.end()) return found->second;
     const NoiseTables& tables = noise_tables(seed);
-    auto floats = [&](const std::array<float, noise_table_size>& values) {
+    auto floats = [&](const GradientTable& values) {
       return llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(values.data(), values.size()));
     };
     llvm::Constant* fields[] = {

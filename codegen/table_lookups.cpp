@@ -1,32 +1,78 @@
 #include "codegen/table_lookups.h"
 
 #include <string>
+#include <vector>
 
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Module.h>
 
 #include "codegen/x86_table_lookups.h"
+#include "nodes/noise_tables.h"
 
 namespace shadetree {
 namespace {
 
-// One lookup per lane: extract the index, load, insert.
-llvm::Value* per_lane_lookup(llvm::IRBuilder<>& builder, llvm::Type* element, llvm::Value* table, llvm::Value* index,
-                             int width) {
+// One lookup per lane: extract the address, load, insert.
+llvm::Value* per_lane_lookup(llvm::IRBuilder<>& builder, llvm::Type* element, llvm::Value* addresses, int width) {
   llvm::Value* result = llvm::PoisonValue::get(llvm::FixedVectorType::get(element, static_cast<unsigned>(width)));
   for (int lane = 0; lane < width; ++lane) {
-    llvm::Value* address = builder.CreateInBoundsGEP(element, table, builder.CreateExtractElement(index, lane));
-    result = builder.CreateInsertElement(result, builder.CreateLoad(element, address), lane);
+    llvm::Value* address = builder.CreateExtractElement(addresses, lane);
+    llvm::Value* loaded = builder.CreateAlignedLoad(element, address, llvm::Align(4));
+    result = builder.CreateInsertElement(result, loaded, lane);
   }
   return result;
 }
 
-// A gather as the strategy does it where no register lookup applies.
+// A load of `element` at each lane's address (4-byte aligned), as the
+// strategy does it where no register lookup applies.
+llvm::Value* memory_lookup_at(llvm::IRBuilder<>& builder, GatherStrategy strategy, llvm::Type* element,
+                              llvm::Value* addresses, int width) {
+  if (strategy == GatherStrategy::per_lane) return per_lane_lookup(builder, element, addresses, width);
+  auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
+  return builder.CreateMaskedGather(vector, addresses, llvm::Align(4));
+}
+
 llvm::Value* memory_lookup(llvm::IRBuilder<>& builder, GatherStrategy strategy, llvm::Type* element, llvm::Value* table,
                            llvm::Value* index, int width) {
-  if (strategy == GatherStrategy::per_lane) return per_lane_lookup(builder, element, table, index, width);
-  auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
-  return builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
+  return memory_lookup_at(builder, strategy, element, builder.CreateInBoundsGEP(element, table, index), width);
+}
+
+// st_gather256_pair_f32_w<width>(at, next, table, index): a gradient
+// table's entries at index and index + 1, which nodes/noise_tables.h keeps
+// adjacent (entry 0 again after the last), as one 64-bit lookup per lane
+// split into its two floats: half the loads of two 32-bit gathers. Tables
+// held in registers take two register lookups instead.
+void define_pair_lookup(llvm::Module& module, GatherStrategy strategy, int width, bool float_tables_in_registers) {
+  llvm::Function* function = module.getFunction("st_gather256_pair_f32_w" + std::to_string(width));
+  if (!function || !function->isDeclaration()) return;
+  llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
+  auto args = function->arg_begin();
+  llvm::Value* at_out = &*args++;
+  llvm::Value* next_out = &*args++;
+  llvm::Value* table = &*args++;
+  llvm::Value* index =
+      builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
+  if (float_tables_in_registers) {
+    llvm::Value* next_index = builder.CreateAnd(
+        builder.CreateAdd(index, builder.CreateVectorSplat(16, builder.getInt32(1))),
+        builder.CreateVectorSplat(16, builder.getInt32(noise_table_size - 1)));
+    builder.CreateStore(x86_register_table_lookup(builder, module, true, table, index), at_out);
+    builder.CreateStore(x86_register_table_lookup(builder, module, true, table, next_index), next_out);
+    builder.CreateRetVoid();
+    return;
+  }
+  llvm::Value* addresses = builder.CreateInBoundsGEP(builder.getFloatTy(), table, index);
+  llvm::Value* pairs = builder.CreateBitCast(
+      memory_lookup_at(builder, strategy, builder.getInt64Ty(), addresses, width),
+      llvm::FixedVectorType::get(builder.getFloatTy(), static_cast<unsigned>(2 * width)));
+  std::vector<int> firsts, seconds;
+  for (int lane = 0; lane < width; ++lane) {
+    firsts.push_back(2 * lane);  // the low half of a little-endian pair: the entry at index
+    seconds.push_back(2 * lane + 1);
+  }
+  builder.CreateStore(builder.CreateShuffleVector(pairs, firsts), at_out);
+  builder.CreateStore(builder.CreateShuffleVector(pairs, seconds), next_out);
+  builder.CreateRetVoid();
 }
 
 // st_gather_small_f32_w<width>(out, table, size, index): in registers
@@ -71,6 +117,8 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
   for (int width : {4, 8, 16}) {
     const bool in_register = register_strategy && width == 16;
     define_small_table_lookup(module, strategy, width, in_register);
+    define_pair_lookup(module, in_register ? GatherStrategy::hardware : strategy, width,
+                       in_register && float_tables_in_registers);
     for (bool table256 : {false, true}) {
       for (bool is_float : {true, false}) {
         const std::string name = std::string(table256 ? "st_gather256_" : "st_gather_") + (is_float ? "f32" : "i32") +

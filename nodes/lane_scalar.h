@@ -8,6 +8,7 @@
 // semantics, so both compute the same operations in the same order.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -69,6 +70,13 @@ inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { retu
 // noise tables, which a vector backend may hold in registers.
 inline float gather256(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather256(const std::int32_t* table, std::int32_t index) { return table[index]; }
+// A gradient table's entries at index and index + 1 mod 256, index in
+// [0, 256): the table holds 256 entries and the first once more
+// (nodes/noise_tables.h), so a vector backend reads both as one 64-bit
+// lookup per lane.
+inline std::array<float, 2> gather256_pair(const float* table, std::int32_t index) {
+  return {table[index], table[index + 1]};
+}
 // Lookups in a float table of `size` entries, index in [0, size): a vector
 // backend may hold a small one (a spline's knots) in registers.
 inline float gather_small(const float* table, std::int32_t, std::int32_t index) { return table[index]; }

@@ -9,6 +9,7 @@
 // Emitted with the semantics, before them; never compiled into shadetree.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -124,6 +125,9 @@ inline intv gather(const std::int32_t* table, intv index) {
 }
 inline floatv gather256(const float* table, intv index) { return gather(table, index); }
 inline intv gather256(const std::int32_t* table, intv index) { return gather(table, index); }
+inline std::array<floatv, 2> gather256_pair(const float* table, intv index) {
+  return {gather(table, index), gather(table, index + 1)};
+}
 inline floatv gather_small(const float* table, std::int32_t, intv index) { return gather(table, index); }
 #endif
 

@@ -5,6 +5,7 @@
 // lane_scalar.h does, so the semantics compute the same values either way.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace shadetree::lanes {
@@ -22,6 +23,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
   extern "C" void st_gather256_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);          \
   extern "C" void st_gather256_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);       \
+  extern "C" void st_gather256_pair_f32_w##W(floatv<W>* at, floatv<W>* next, const float* table,             \
+                                             const intv<W>* index);                                          \
   extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
                                            const intv<W>* index);
 
@@ -67,6 +70,11 @@ SHADETREE_VECTOR_GATHERS(16)
   inline intv<W> gather256(const std::int32_t* table, intv<W> index) {                                      \
     intv<W> result;                                                                                          \
     st_gather256_i32_w##W(&result, table, &index);                                                           \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline std::array<floatv<W>, 2> gather256_pair(const float* table, intv<W> index) {                       \
+    std::array<floatv<W>, 2> result;                                                                         \
+    st_gather256_pair_f32_w##W(&result[0], &result[1], table, &index);                                       \
     return result;                                                                                           \
   }                                                                                                          \
   inline floatv<W> gather_small(const float* table, std::int32_t size, intv<W> index) {                     \

@@ -57,6 +57,9 @@ NoiseTables make_noise_tables(std::uint32_t seed) {
     tables.hashed_gradient_y[i] = tables.gradient_y[tables.permutation[i]];
     tables.hashed_gradient_z[i] = tables.gradient_z[tables.permutation[i]];
   }
+  for (GradientTable* table : {&tables.gradient_x, &tables.gradient_y, &tables.gradient_z, &tables.hashed_gradient_x,
+                               &tables.hashed_gradient_y, &tables.hashed_gradient_z})
+    (*table)[noise_table_size] = (*table)[0];
   return tables;
 }
 

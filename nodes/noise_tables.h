@@ -10,16 +10,22 @@ namespace shadetree {
 inline constexpr int noise_table_size = 256;  // n in Perlin & Hoffert 1989 section 2.3
 inline constexpr std::uint32_t default_noise_seed = 1989;
 
+// A table of gradient components: n entries, then entry 0 once more, so
+// that the entries at slot i and at slot (i + 1) mod n are adjacent in
+// memory (a vector backend reads both as one 64-bit lookup per lane:
+// gather256_pair in nodes/lane_scalar.h).
+using GradientTable = std::array<float, noise_table_size + 1>;
+
 struct NoiseTables {
   std::array<std::int32_t, noise_table_size> permutation;  // P: a permutation of 0..n-1
-  std::array<float, noise_table_size> gradient_x;          // G: unit vectors, as SoA
-  std::array<float, noise_table_size> gradient_y;
-  std::array<float, noise_table_size> gradient_z;
+  GradientTable gradient_x;                                // G: unit vectors, as SoA
+  GradientTable gradient_y;
+  GradientTable gradient_z;
   // G[P[i]]: the last hash step and the gradient lookup composed into one
   // table, so that a knot's gradient is one lookup instead of two.
-  std::array<float, noise_table_size> hashed_gradient_x;
-  std::array<float, noise_table_size> hashed_gradient_y;
-  std::array<float, noise_table_size> hashed_gradient_z;
+  GradientTable hashed_gradient_x;
+  GradientTable hashed_gradient_y;
+  GradientTable hashed_gradient_z;
 };
 
 // Tables for a seed, built as 1989 section 2.3 prescribes: P by a

@@ -33,6 +33,28 @@ TEST(Noise4, IsZeroOnTheIntegerLattice) {
   }
 }
 
+// The rows' paired lookups give what a lookup per knot gives, to the bit,
+// also where a row's cells straddle the tables' wrap (x cells 255 and 256).
+TEST(Noise4, RowsOfKnotsAgreeWithKnotsOneAtATime) {
+  std::mt19937 random(1985);
+  std::uniform_real_distribution<float> coordinate(-50.0f, 50.0f), near_wrap(254.0f, 257.0f);
+  for (int i = 0; i < 5000; ++i) {
+    const float x = i % 2 ? coordinate(random) : near_wrap(random), y = coordinate(random), z = coordinate(random),
+                w = coordinate(random);
+    const auto gradient = sem::noise4_gradient_tables(tables());
+    float knot_by_knot = 0.0f;
+    sem::for_each_noise4_knot(tables(), x, y, z, w, sem::lattice_axis(x), sem::lattice_axis(y), sem::lattice_axis(z),
+                              sem::lattice_axis(w), [&](int slot, float u, float v, float s, float t) {
+                                const std::array<float, 4> g{gradient[0][slot], gradient[1][slot], gradient[2][slot],
+                                                             gradient[3][slot]};
+                                knot_by_knot = knot_by_knot + sem::noise_weight(u) * sem::noise_weight(v) *
+                                                                  sem::noise_weight(s) * sem::noise_weight(t) *
+                                                                  sem::noise4_slope(g, u, v, s, t);
+                              });
+    ASSERT_EQ(sem::noise4(tables(), x, y, z, w), knot_by_knot) << x << ", " << y << ", " << z << ", " << w;
+  }
+}
+
 // The proven bound (nodes/semantics/noise_intervals.h) holds over many
 // points, and the values fill a good part of it: noise4 is not a flat field.
 TEST(Noise4, StaysWithinItsProvenBound) {

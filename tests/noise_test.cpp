@@ -37,6 +37,20 @@ TEST(NoiseTables, GradientsAreUnitVectors) {
   }
 }
 
+// A knot and its neighbour along x read one paired lookup (gather256_pair),
+// which needs slot 255's neighbour, slot 0, right after it.
+TEST(NoiseTables, GradientTablesRepeatTheirFirstEntryAfterTheLast) {
+  for (const GradientTable* table : {&tables().gradient_x, &tables().gradient_y, &tables().gradient_z,
+                                     &tables().hashed_gradient_x, &tables().hashed_gradient_y,
+                                     &tables().hashed_gradient_z}) {
+    for (int slot = 0; slot < noise_table_size; ++slot) {
+      const auto pair = gather256_pair(table->data(), slot);
+      EXPECT_EQ(pair[0], (*table)[slot]);
+      EXPECT_EQ(pair[1], (*table)[(slot + 1) % noise_table_size]) << "slot " << slot;
+    }
+  }
+}
+
 TEST(NoiseTables, SeedsGiveDifferentTablesAndTheSameSeedTheSame) {
   EXPECT_EQ(make_noise_tables(7).permutation, make_noise_tables(7).permutation);
   EXPECT_NE(make_noise_tables(7).permutation, make_noise_tables(8).permutation);
@@ -48,6 +62,23 @@ TEST(Noise, IsZeroOnTheIntegerLattice) {
   for (int i = -3; i <= 3; ++i)
     for (int j = -3; j <= 3; ++j)
       for (int k : {-300, -1, 0, 1, 17, 10000}) EXPECT_EQ(noise(tables(), float(i), float(j), float(k)), 0.0f);
+}
+
+// The rows' paired lookups give what a lookup per knot gives, to the bit,
+// also where a row's cells straddle the tables' wrap (x cells 255 and 256).
+TEST(Noise, RowsOfKnotsAgreeWithKnotsOneAtATime) {
+  SamplePoints points;
+  for (int n = 0; n < 20000; ++n) {
+    const float x = n % 2 ? points.next(600) : 255.0f + points.next(1) * 0.999f, y = points.next(50),
+                z = points.next(50);
+    float knot_by_knot = 0.0f;
+    for_each_noise_knot(tables(), x, y, z, [&](int slot, float u, float v, float w) {
+      const float slope = tables().hashed_gradient_x[slot] * u + tables().hashed_gradient_y[slot] * v +
+                          tables().hashed_gradient_z[slot] * w;
+      knot_by_knot = knot_by_knot + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
+    });
+    EXPECT_EQ(noise(tables(), x, y, z), knot_by_knot) << x << ", " << y << ", " << z;
+  }
 }
 
 TEST(Noise, IsBoundedAndNotConstant) {

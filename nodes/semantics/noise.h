@@ -53,6 +53,7 @@ LatticeCoordinate<F> lattice_coordinate(F x) {
 // cell d cells on (phi and the slot reduce it mod n).
 template <class F>
 struct LatticeAxis {
+  static constexpr bool next_cell_hashes_next = true;  // index(1) = index(0) + 1
   LatticeCoordinate<F> at;
   F corner() const { return at.cell; }
   IntOf<F> index(int d) const { return at.hash_index + d; }
@@ -72,6 +73,7 @@ F noise_period(F period) {
 // 2^24, which covers 16 octaves of the largest period), then mod n.
 template <class F>
 struct PeriodicAxis {
+  static constexpr bool next_cell_hashes_next = false;  // the last cell of a period wraps to 0
   F cell;    // floor(x)
   F period;  // whole, >= 1
   F corner() const { return cell; }
@@ -95,33 +97,60 @@ PeriodicAxis<F> periodic_axis(F x, F period) {
   return {floor(x), period};
 }
 
-// Visits the 2^3 knots around p (1989 section 2.3), giving each one's
-// hashed-gradient slot (i + phi(j + phi(k))) mod n, so that its gradient
-// G[phi(i + phi(j + phi(k)))] is hashed_gradient[slot], and its offset
-// (u, v, w) = p - (i, j, k). The axes say how cells hash: as they are, or
-// wrapped by a period. `outer_hash`, added to k before its phi, is how a
-// fourth axis extends the hash (nodes/semantics/noise4.h); 0 for 3D.
+// The two knots (0, j, k) and (1, j, k) of a row along x: their slots
+// (i + phi(j + phi(k))) mod n. Where the axis hashes cell c + 1 as cell
+// c's index plus one, the second slot is the first plus one (mod n), and
+// a gradient table's entries at both are one paired lookup
+// (gather256_pair: adjacent in memory, so one 64-bit load per lane).
+template <class Axis, class I>
+struct KnotRow {
+  const Axis& x_axis;
+  I hash_jk;
+  I slot(int di) const { return (x_axis.index(di) + hash_jk) & (noise_table_size - 1); }
+  auto entries(const float* table) const {
+    if constexpr (Axis::next_cell_hashes_next) {
+      return gather256_pair(table, slot(0));
+    } else {
+      return std::array<decltype(gather256(table, hash_jk)), 2>{gather256(table, slot(0)), gather256(table, slot(1))};
+    }
+  }
+};
+
+// Visits the 2^3 knots around p (1989 section 2.3) a row at a time, in the
+// order k, j, then i: visit(row, u, v, w) with the knots' offsets (u[i],
+// v, w) = p - (i, j, k), each knot's gradient being
+// G[phi(i + phi(j + phi(k)))] = hashed_gradient[row.slot(i)]. The axes say
+// how cells hash: as they are, or wrapped by a period. `outer_hash`, added
+// to k before its phi, is how a fourth axis extends the hash
+// (nodes/semantics/noise4.h); 0 for 3D.
 //
 // The knot loops are written out (each_of_0_and_1): a kernel's optimizer
 // left the outer one rolled around a body too large to unroll by its
 // measure, which kept the noise tables spilled and reloaded per knot.
 template <class F, class Axis, class Visit>
-void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
-                         IntOf<F> outer_hash, Visit visit) {
+void for_each_noise_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
+                        IntOf<F> outer_hash, Visit visit) {
   F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
+  const std::array<F, 2> u{fx - 0.0f, fx - 1.0f};
   each_of_0_and_1([&](auto dk) {
     auto hash_k = noise_phi(tables, az.index(dk) + outer_hash);
     F w = fz - float(dk);
     each_of_0_and_1([&](auto dj) {
       auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
       F v = fy - float(dj);
-      each_of_0_and_1([&](auto di) {
-        auto slot = (ax.index(di) + hash_jk) & (noise_table_size - 1);
-        F u = fx - float(di);
-        visit(slot, u, v, w);
-      });
+      visit(KnotRow<Axis, decltype(hash_jk)>{ax, hash_jk}, u, v, w);
     });
   });
+}
+
+// The same knots one at a time: visit(slot, u, v, w).
+template <class F, class Axis, class Visit>
+void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
+                         IntOf<F> outer_hash, Visit visit) {
+  for_each_noise_row(tables, x, y, z, ax, ay, az, outer_hash,
+                     [&](const auto& row, const std::array<F, 2>& u, F v, F w) {
+                       each_of_0_and_1([&](auto di) { visit(row.slot(di), u[di], v, w); });
+                     });
 }
 
 template <class F, class Axis, class Visit>
@@ -139,12 +168,16 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) 
 template <class F, class Axis>
 F noise_on_axes(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az) {
   F sum = splat<F>(0.0f);
-  for_each_noise_knot(tables, x, y, z, ax, ay, az, [&](auto slot, F u, F v, F w) {
-    F slope = gather256(tables.hashed_gradient_x.data(), slot) * u +
-              gather256(tables.hashed_gradient_y.data(), slot) * v +
-              gather256(tables.hashed_gradient_z.data(), slot) * w;
-    sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
-  });
+  for_each_noise_row(tables, x, y, z, ax, ay, az, IntOf<F>{} + 0,
+                     [&](const auto& row, const std::array<F, 2>& u, F v, F w) {
+                       const auto gx = row.entries(tables.hashed_gradient_x.data());
+                       const auto gy = row.entries(tables.hashed_gradient_y.data());
+                       const auto gz = row.entries(tables.hashed_gradient_z.data());
+                       each_of_0_and_1([&](auto di) {
+                         F slope = gx[di] * u[di] + gy[di] * v + gz[di] * w;
+                         sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(w) * slope;
+                       });
+                     });
   return sum;
 }
 
@@ -166,17 +199,21 @@ F pnoise(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz) {
 template <class F>
 Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
   Vec3<F> sum{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
-  for_each_noise_knot(tables, x, y, z, [&](auto slot, F u, F v, F w) {
-    F gx = gather256(tables.hashed_gradient_x.data(), slot);
-    F gy = gather256(tables.hashed_gradient_y.data(), slot);
-    F gz = gather256(tables.hashed_gradient_z.data(), slot);
-    F slope = gx * u + gy * v + gz * w;
-    F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
-    F weight = wu * wv * ww;
-    sum.x = sum.x + noise_weight_derivative(u) * wv * ww * slope + weight * gx;
-    sum.y = sum.y + wu * noise_weight_derivative(v) * ww * slope + weight * gy;
-    sum.z = sum.z + wu * wv * noise_weight_derivative(w) * slope + weight * gz;
-  });
+  for_each_noise_row(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z), IntOf<F>{} + 0,
+                     [&](const auto& row, const std::array<F, 2>& knot_u, F v, F w) {
+                       const auto row_gx = row.entries(tables.hashed_gradient_x.data());
+                       const auto row_gy = row.entries(tables.hashed_gradient_y.data());
+                       const auto row_gz = row.entries(tables.hashed_gradient_z.data());
+                       each_of_0_and_1([&](auto di) {
+                         F u = knot_u[di], gx = row_gx[di], gy = row_gy[di], gz = row_gz[di];
+                         F slope = gx * u + gy * v + gz * w;
+                         F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
+                         F weight = wu * wv * ww;
+                         sum.x = sum.x + noise_weight_derivative(u) * wv * ww * slope + weight * gx;
+                         sum.y = sum.y + wu * noise_weight_derivative(v) * ww * slope + weight * gy;
+                         sum.z = sum.z + wu * wv * noise_weight_derivative(w) * slope + weight * gz;
+                       });
+                     });
   return sum;
 }
 

@@ -9,18 +9,30 @@ namespace shadetree::semantics {
 
 using namespace shadetree::lanes;
 
-// Visits the 2^4 knots around (p, w), giving each one's slot
-// (i + phi(j + phi(k + phi(l)))) mod n, the 1989 hash with one more fold,
-// and its offset (u, v, s, t) = (p, w) - (i, j, k, l).
+// Visits the 2^4 knots around (p, w) a row along x at a time, as
+// for_each_noise_row does in 3D: slots (i + phi(j + phi(k + phi(l)))) mod n,
+// the 1989 hash with one more fold, and offsets (u[i], v, s, t) =
+// (p, w) - (i, j, k, l).
 template <class F, class Axis, class Visit>
-void for_each_noise4_knot(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
-                          const Axis& az, const Axis& aw, Visit visit) {
+void for_each_noise4_row(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
+                         const Axis& az, const Axis& aw, Visit visit) {
   F fw = w - aw.corner();
   each_of_0_and_1([&](auto dl) {  // written out, as the 3D knots are
     auto hash_l = noise_phi(tables, aw.index(dl));
     F t = fw - float(dl);
-    for_each_noise_knot(tables, x, y, z, ax, ay, az, hash_l, [&](auto slot, F u, F v, F s) { visit(slot, u, v, s, t); });
+    for_each_noise_row(tables, x, y, z, ax, ay, az, hash_l,
+                       [&](const auto& row, const std::array<F, 2>& u, F v, F s) { visit(row, u, v, s, t); });
   });
+}
+
+// The same knots one at a time: visit(slot, u, v, s, t).
+template <class F, class Axis, class Visit>
+void for_each_noise4_knot(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
+                          const Axis& az, const Axis& aw, Visit visit) {
+  for_each_noise4_row(tables, x, y, z, w, ax, ay, az, aw,
+                      [&](const auto& row, const std::array<F, 2>& u, F v, F s, F t) {
+                        each_of_0_and_1([&](auto di) { visit(row.slot(di), u[di], v, s, t); });
+                      });
 }
 
 // A knot's 4D gradient: the unit vector G[phi(slot)] of the 3D tables for
@@ -30,21 +42,32 @@ void for_each_noise4_knot(const NoiseTables& tables, F x, F y, F z, F w, const A
 // E[g g^T] = I / 3 in 4D, as for the 3D gradients. Noise is linear in
 // independent gradients, so its covariance, hence its spectrum, depends on
 // them only through E[g g^T]: it is isotropic in (p, w) to second order.
-template <class F, class Slot>
-F noise4_slope(const NoiseTables& tables, Slot slot, F u, F v, F s, F t) {
-  return gather256(tables.hashed_gradient_x.data(), slot) * u + gather256(tables.hashed_gradient_y.data(), slot) * v +
-         gather256(tables.hashed_gradient_z.data(), slot) * s + gather256(tables.gradient_x.data(), slot) * t;
+inline std::array<const float*, 4> noise4_gradient_tables(const NoiseTables& tables) {
+  return {tables.hashed_gradient_x.data(), tables.hashed_gradient_y.data(), tables.hashed_gradient_z.data(),
+          tables.gradient_x.data()};
+}
+
+// g . (u, v, s, t) for a knot's gradient g.
+template <class G, class F>
+F noise4_slope(const std::array<G, 4>& g, F u, F v, F s, F t) {
+  return g[0] * u + g[1] * v + g[2] * s + g[3] * t;
 }
 
 // sum over the 16 knots of w(u) w(v) w(s) w(t) (g . (u, v, s, t)).
 template <class F, class Axis>
 F noise4_on_axes(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay, const Axis& az,
                  const Axis& aw) {
+  const auto gradient = noise4_gradient_tables(tables);
   F sum = splat<F>(0.0f);
-  for_each_noise4_knot(tables, x, y, z, w, ax, ay, az, aw, [&](auto slot, F u, F v, F s, F t) {
-    sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(s) * noise_weight(t) *
-                    noise4_slope(tables, slot, u, v, s, t);
-  });
+  for_each_noise4_row(tables, x, y, z, w, ax, ay, az, aw,
+                      [&](const auto& row, const std::array<F, 2>& u, F v, F s, F t) {
+                        const auto gx = row.entries(gradient[0]), gy = row.entries(gradient[1]),
+                                   gz = row.entries(gradient[2]), gw = row.entries(gradient[3]);
+                        each_of_0_and_1([&](auto di) {
+                          sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(s) * noise_weight(t) *
+                                          noise4_slope(std::array{gx[di], gy[di], gz[di], gw[di]}, u[di], v, s, t);
+                        });
+                      });
   return sum;
 }
 

@@ -135,13 +135,17 @@ Interval noise4_over_cells(const NoiseTables& tables, Interval x, Interval y, In
   const Interval box[4] = {x, y, z, w};
   return lattice_over_cells(box, lattice_range(x, y, z, w, noise4_bound), [&](const float* corner,
                                                                                const Interval* fraction) {
+    const auto gradient = semantics::noise4_gradient_tables(tables);
+    auto gradient_at = [&](int slot) {
+      return std::array{gradient[0][slot], gradient[1][slot], gradient[2][slot], gradient[3][slot]};
+    };
     Interval sum = 0.0f;
     semantics::for_each_noise4_knot(
         tables, corner[0], corner[1], corner[2], corner[3], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
         cell_axis(corner[2], 2), cell_axis(corner[3], 3), [&](auto slot, float du, float dv, float ds, float dt) {
           const Interval u = fraction[0] + du, v = fraction[1] + dv, s = fraction[2] + ds, t = fraction[3] + dt;
           sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(s) * noise_weight_over(t) *
-                          semantics::noise4_slope(tables, slot, u, v, s, t);
+                          semantics::noise4_slope(gradient_at(slot), u, v, s, t);
         });
     return sum;
   });
