@@ -31,10 +31,12 @@ I noise_phi(const NoiseTables& tables, I i) {
 }
 
 // The lattice cell of a coordinate: floor(x) for the offsets, and floor(x)
-// mod n as an integer for the hash. Reducing mod n in float first keeps the
-// conversion to int defined however large x is (floats above 2^24 are
-// integers, so the reduction is exact); an infinite or NaN coordinate
-// hashes as cell 0 instead of indexing outside the tables.
+// mod n as an integer for the hash. A cell within int32 converts exactly,
+// and n being a power of two, the low bits of its two's complement are the
+// mod. Past 2^31 in magnitude every float is a multiple of 256, hence 0 mod
+// n, as are the clamp's ends; so clamping first keeps the conversion
+// defined however large x is, and an infinite or NaN coordinate (max(NaN,
+// lo) is lo) hashes as cell 0 instead of indexing outside the tables.
 template <class F>
 struct LatticeCoordinate {
   F cell;               // floor(x)
@@ -44,9 +46,8 @@ struct LatticeCoordinate {
 template <class F>
 LatticeCoordinate<F> lattice_coordinate(F x) {
   F cell = floor(x);
-  F wrapped = cell - floor(cell * (1.0f / noise_table_size)) * float(noise_table_size);
-  wrapped = select(both(wrapped >= 0.0f, wrapped < float(noise_table_size)), wrapped, splat<F>(0.0f));
-  return {cell, to_int(wrapped)};
+  F convertible = min(max(cell, splat<F>(-2147483648.0f)), splat<F>(2147483392.0f));  // -2^31, 2^31 - 256
+  return {cell, to_int(convertible) & (noise_table_size - 1)};
 }
 
 // One axis of the lattice: a coordinate's cell, and the hash index of the
