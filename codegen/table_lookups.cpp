@@ -1,6 +1,7 @@
 #include "codegen/table_lookups.h"
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <llvm/IR/IRBuilder.h>
@@ -37,13 +38,30 @@ llvm::Value* memory_lookup(llvm::IRBuilder<>& builder, GatherStrategy strategy, 
   return memory_lookup_at(builder, strategy, element, builder.CreateInBoundsGEP(element, table, index), width);
 }
 
-// st_gather256_pair_f32_w<width>(at, next, table, index): a gradient
+// How a kernel of one width looks up a 256-entry table.
+struct Lookups256 {
+  GatherStrategy memory;     // for tables not held in registers
+  bool tables_in_registers;  // every 256-entry table in sixteen registers
+  bool ints_as_bytes;        // int tables (the permutation) as bytes in four registers
+};
+
+llvm::Value* lookup256(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how, bool is_float,
+                       llvm::Value* table, llvm::Value* index, int width) {
+  if (!is_float && how.ints_as_bytes) return x86_byte_table_lookup(builder, module, table, index);
+  if (how.tables_in_registers) return x86_register_table_lookup(builder, module, is_float, table, index);
+  llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+  return memory_lookup(builder, how.memory, element, table, index, width);
+}
+
+// st_gather256_pair_<type>_w<width>(at, next, table, index): a noise
 // table's entries at index and index + 1, which nodes/noise_tables.h keeps
-// adjacent (entry 0 again after the last), as one 64-bit lookup per lane
-// split into its two floats: half the loads of two 32-bit gathers. Tables
-// held in registers take two register lookups instead.
-void define_pair_lookup(llvm::Module& module, GatherStrategy strategy, int width, bool float_tables_in_registers) {
-  llvm::Function* function = module.getFunction("st_gather256_pair_f32_w" + std::to_string(width));
+// adjacent (entry 0 again after the last). From memory, one 64-bit lookup
+// per lane split into its two halves: half the loads of two 32-bit
+// gathers. As bytes, both index vectors in one byte permute. From
+// sixteen registers, two lookups.
+void define_pair_lookup(llvm::Module& module, const Lookups256& how, int width, bool is_float) {
+  llvm::Function* function =
+      module.getFunction(std::string("st_gather256_pair_") + (is_float ? "f32" : "i32") + "_w" + std::to_string(width));
   if (!function || !function->isDeclaration()) return;
   llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
   auto args = function->arg_begin();
@@ -52,26 +70,32 @@ void define_pair_lookup(llvm::Module& module, GatherStrategy strategy, int width
   llvm::Value* table = &*args++;
   llvm::Value* index =
       builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
-  if (float_tables_in_registers) {
+  llvm::Value* at;
+  llvm::Value* next;
+  if (!is_float && how.ints_as_bytes) {
+    std::tie(at, next) = x86_byte_table_pair_lookup(builder, module, table, index);
+  } else if (how.tables_in_registers) {
     llvm::Value* next_index = builder.CreateAnd(
-        builder.CreateAdd(index, builder.CreateVectorSplat(16, builder.getInt32(1))),
-        builder.CreateVectorSplat(16, builder.getInt32(noise_table_size - 1)));
-    builder.CreateStore(x86_register_table_lookup(builder, module, true, table, index), at_out);
-    builder.CreateStore(x86_register_table_lookup(builder, module, true, table, next_index), next_out);
-    builder.CreateRetVoid();
-    return;
+        builder.CreateAdd(index, builder.CreateVectorSplat(width, builder.getInt32(1))),
+        builder.CreateVectorSplat(width, builder.getInt32(noise_table_size - 1)));
+    at = lookup256(builder, module, how, is_float, table, index, width);
+    next = lookup256(builder, module, how, is_float, table, next_index, width);
+  } else {
+    llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+    llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
+    llvm::Value* pairs =
+        builder.CreateBitCast(memory_lookup_at(builder, how.memory, builder.getInt64Ty(), addresses, width),
+                              llvm::FixedVectorType::get(element, static_cast<unsigned>(2 * width)));
+    std::vector<int> firsts, seconds;
+    for (int lane = 0; lane < width; ++lane) {
+      firsts.push_back(2 * lane);  // the low half of a little-endian pair: the entry at index
+      seconds.push_back(2 * lane + 1);
+    }
+    at = builder.CreateShuffleVector(pairs, firsts);
+    next = builder.CreateShuffleVector(pairs, seconds);
   }
-  llvm::Value* addresses = builder.CreateInBoundsGEP(builder.getFloatTy(), table, index);
-  llvm::Value* pairs = builder.CreateBitCast(
-      memory_lookup_at(builder, strategy, builder.getInt64Ty(), addresses, width),
-      llvm::FixedVectorType::get(builder.getFloatTy(), static_cast<unsigned>(2 * width)));
-  std::vector<int> firsts, seconds;
-  for (int lane = 0; lane < width; ++lane) {
-    firsts.push_back(2 * lane);  // the low half of a little-endian pair: the entry at index
-    seconds.push_back(2 * lane + 1);
-  }
-  builder.CreateStore(builder.CreateShuffleVector(pairs, firsts), at_out);
-  builder.CreateStore(builder.CreateShuffleVector(pairs, seconds), next_out);
+  builder.CreateStore(at, at_out);
+  builder.CreateStore(next, next_out);
   builder.CreateRetVoid();
 }
 
@@ -116,32 +140,26 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
   llvm::LLVMContext& context = module.getContext();
   for (int width : {4, 8, 16}) {
     const bool in_register = register_strategy && width == 16;
+    const Lookups256 how{in_register ? GatherStrategy::hardware : strategy, in_register && float_tables_in_registers,
+                         in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
-    define_pair_lookup(module, in_register ? GatherStrategy::hardware : strategy, width,
-                       in_register && float_tables_in_registers);
-    for (bool table256 : {false, true}) {
-      for (bool is_float : {true, false}) {
+    for (bool is_float : {true, false}) {
+      define_pair_lookup(module, how, width, is_float);
+      for (bool table256 : {false, true}) {
         const std::string name = std::string(table256 ? "st_gather256_" : "st_gather_") + (is_float ? "f32" : "i32") +
                                  "_w" + std::to_string(width);
         llvm::Function* function = module.getFunction(name);
         if (!function || !function->isDeclaration()) continue;
         llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "entry", function));
-        llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
         auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
         auto args = function->arg_begin();
         llvm::Value* out = &*args++;
         llvm::Value* table = &*args++;
         llvm::Value* index = builder.CreateLoad(index_type, &*args);
-        llvm::Value* result;
-        if (in_register && table256 && byte_permutes && !is_float) {
-          result = x86_byte_table_lookup(builder, module, table, index);
-        } else if (in_register && table256 && float_tables_in_registers) {
-          result = x86_register_table_lookup(builder, module, is_float, table, index);
-        } else {
-          const GatherStrategy memory = in_register ? GatherStrategy::hardware : strategy;
-          result = memory_lookup(builder, memory, element, table, index, width);
-        }
-        builder.CreateStore(result, out);
+        llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+        builder.CreateStore(table256 ? lookup256(builder, module, how, is_float, table, index, width)
+                                     : memory_lookup(builder, how.memory, element, table, index, width),
+                            out);
         builder.CreateRetVoid();
       }
     }

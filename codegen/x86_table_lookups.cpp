@@ -7,7 +7,6 @@
 #include <llvm/IR/Module.h>
 
 namespace shadetree {
-
 llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, bool is_float,
                                        llvm::Value* table, llvm::Value* index) {
   llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
@@ -34,13 +33,24 @@ llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Modul
   return candidates[0];
 }
 
-llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
-                                   llvm::Value* index) {
+namespace {
+
+// The mask {first, first + 1, ..., first + count - 1} of a shuffle.
+std::vector<int> lanes_from(int first, int count) {
+  std::vector<int> lanes(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) lanes[static_cast<std::size_t>(i)] = first + i;
+  return lanes;
+}
+
+// The 64 bytes that `byte_index` (64 indices into the table, as bytes)
+// picks from the table's 256 ints narrowed to bytes: the table as four
+// 64-byte registers (loop-invariant: hoisted out of the sample loop), two
+// vpermi2b on each index's low 7 bits and a select on bit 7.
+llvm::Value* byte_permute(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                          llvm::Value* byte_index) {
   auto* bytes = llvm::FixedVectorType::get(builder.getInt8Ty(), 64);
   auto* ints = llvm::FixedVectorType::get(builder.getInt32Ty(), 16);
   llvm::Function* permute = llvm::Intrinsic::getDeclaration(&module, llvm::Intrinsic::x86_avx512_vpermi2var_qi_512);
-  // The table's 256 ints narrowed to bytes, as four 64-byte registers
-  // (loop-invariant: hoisted out of the sample loop).
   std::vector<llvm::Value*> quarters;
   for (int quarter = 0; quarter < 4; ++quarter) {
     std::vector<llvm::Value*> parts;
@@ -50,26 +60,51 @@ llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& m
           llvm::Align(4));
       parts.push_back(builder.CreateTrunc(chunk, llvm::FixedVectorType::get(builder.getInt8Ty(), 16)));
     }
-    std::vector<int> first(32), second(32), all(64);
-    for (int i = 0; i < 32; ++i) first[i] = second[i] = i;
-    for (int i = 0; i < 64; ++i) all[i] = i;
-    llvm::Value* low = builder.CreateShuffleVector(parts[0], parts[1], first);
-    llvm::Value* high = builder.CreateShuffleVector(parts[2], parts[3], second);
-    quarters.push_back(builder.CreateShuffleVector(low, high, all));
+    quarters.push_back(builder.CreateShuffleVector(builder.CreateShuffleVector(parts[0], parts[1], lanes_from(0, 32)),
+                                                   builder.CreateShuffleVector(parts[2], parts[3], lanes_from(0, 32)),
+                                                   lanes_from(0, 64)));
   }
-  // The 16 indices as the first 16 bytes of a 64-byte index register.
-  std::vector<int> widen(64);
-  for (int i = 0; i < 64; ++i) widen[i] = i < 16 ? i : 16;
-  llvm::Value* narrow = builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
-  llvm::Value* byte_index =
-      builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
   llvm::Value* low_half = builder.CreateCall(permute, {quarters[0], byte_index, quarters[1]});
   llvm::Value* high_half = builder.CreateCall(permute, {quarters[2], byte_index, quarters[3]});
   llvm::Value* upper = builder.CreateICmpSLT(byte_index, llvm::Constant::getNullValue(bytes));  // bit 7
-  llvm::Value* chosen = builder.CreateSelect(upper, high_half, low_half);
-  std::vector<int> first16(16);
-  for (int i = 0; i < 16; ++i) first16[i] = i;
-  return builder.CreateZExt(builder.CreateShuffleVector(chosen, first16), ints);
+  return builder.CreateSelect(upper, high_half, low_half);
+}
+
+// 16 int indices as bytes.
+llvm::Value* narrow_index(llvm::IRBuilderBase& builder, llvm::Value* index) {
+  return builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
+}
+
+// 16 looked-up bytes from `first` on, as ints.
+llvm::Value* widen_result(llvm::IRBuilderBase& builder, llvm::Value* chosen, int first) {
+  return builder.CreateZExt(builder.CreateShuffleVector(chosen, lanes_from(first, 16)),
+                            llvm::FixedVectorType::get(builder.getInt32Ty(), 16));
+}
+
+}  // namespace
+
+llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
+                                   llvm::Value* index) {
+  // The 16 indices as the first 16 bytes of a 64-byte index register.
+  llvm::Value* narrow = narrow_index(builder, index);
+  std::vector<int> widen(64, 16);
+  for (int i = 0; i < 16; ++i) widen[i] = i;
+  llvm::Value* byte_index = builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
+  return widen_result(builder, byte_permute(builder, module, table, byte_index), 0);
+}
+
+std::pair<llvm::Value*, llvm::Value*> x86_byte_table_pair_lookup(llvm::IRBuilderBase& builder, llvm::Module& module,
+                                                                   llvm::Value* table, llvm::Value* index) {
+  // index and index + 1 as bytes 0-15 and 16-31 (a byte's add wraps mod 256).
+  llvm::Value* narrow = narrow_index(builder, index);
+  llvm::Value* next = builder.CreateAdd(narrow, llvm::ConstantInt::get(narrow->getType(), 1));
+  std::vector<int> both(64, 0);
+  for (int i = 0; i < 32; ++i) both[i] = i;
+  llvm::Value* byte_index = builder.CreateShuffleVector(
+      builder.CreateShuffleVector(narrow, next, lanes_from(0, 32)),
+      llvm::Constant::getNullValue(llvm::FixedVectorType::get(builder.getInt8Ty(), 32)), both);
+  llvm::Value* chosen = byte_permute(builder, module, table, byte_index);
+  return {widen_result(builder, chosen, 0), widen_result(builder, chosen, 16)};
 }
 
 llvm::Value* x86_small_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,

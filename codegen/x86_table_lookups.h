@@ -6,6 +6,8 @@
 // that the target has AVX-512 (and VBMI for the byte permutes).
 #pragma once
 
+#include <utility>
+
 namespace llvm {
 class IRBuilderBase;
 class Module;
@@ -25,6 +27,12 @@ llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Modul
 // 7 bits, a select on bit 7.
 llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
                                    llvm::Value* index);
+
+// The same table's entries at index and at index + 1 mod 256 (a pair of
+// noise lattice cells), both from the one byte permute: 32 of its 64 byte
+// lanes.
+std::pair<llvm::Value*, llvm::Value*> x86_byte_table_pair_lookup(llvm::IRBuilderBase& builder, llvm::Module& module,
+                                                                   llvm::Value* table, llvm::Value* index);
 
 // A float table of `size` <= x86_small_table_entries entries (a spline's
 // knots) in two registers, loaded under a mask so that nothing past its

@@ -249,8 +249,9 @@ inline Interval gather256(const float* table, IntervalInt index) {
 inline IntervalInt gather256(const std::int32_t* table, IntervalInt index) {
   return gather(table, {std::max(index.lo, 0), std::min(index.hi, 255)});
 }
-inline std::array<Interval, 2> gather256_pair(const float* table, IntervalInt index) {
-  return {gather256(table, index), gather(table, {std::max(index.lo, 0) + 1, std::min(index.hi, 255) + 1})};
+template <class T>
+auto gather256_pair(const T* table, IntervalInt index) {
+  return std::array{gather256(table, index), gather(table, {std::max(index.lo, 0) + 1, std::min(index.hi, 255) + 1})};
 }
 inline Interval gather_small(const float* table, std::int32_t, IntervalInt index) { return gather(table, index); }
 

@@ -70,11 +70,12 @@ inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { retu
 // noise tables, which a vector backend may hold in registers.
 inline float gather256(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather256(const std::int32_t* table, std::int32_t index) { return table[index]; }
-// A gradient table's entries at index and index + 1 mod 256, index in
+// A noise table's entries at index and index + 1 mod 256, index in
 // [0, 256): the table holds 256 entries and the first once more
 // (nodes/noise_tables.h), so a vector backend reads both as one 64-bit
 // lookup per lane.
-inline std::array<float, 2> gather256_pair(const float* table, std::int32_t index) {
+template <class T>
+std::array<T, 2> gather256_pair(const T* table, std::int32_t index) {
   return {table[index], table[index + 1]};
 }
 // Lookups in a float table of `size` entries, index in [0, size): a vector

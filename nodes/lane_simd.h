@@ -125,8 +125,9 @@ inline intv gather(const std::int32_t* table, intv index) {
 }
 inline floatv gather256(const float* table, intv index) { return gather(table, index); }
 inline intv gather256(const std::int32_t* table, intv index) { return gather(table, index); }
-inline std::array<floatv, 2> gather256_pair(const float* table, intv index) {
-  return {gather(table, index), gather(table, index + 1)};
+template <class T>
+auto gather256_pair(const T* table, intv index) {
+  return std::array{gather(table, index), gather(table, index + 1)};
 }
 inline floatv gather_small(const float* table, std::int32_t, intv index) { return gather(table, index); }
 #endif

@@ -251,8 +251,9 @@ inline TraceF gather(const float* table, const TraceI& index) { return traced_ga
 inline TraceI gather(const std::int32_t* table, const TraceI& index) { return traced_gather(table, index); }
 inline TraceF gather256(const float* table, const TraceI& index) { return traced_gather(table, index); }
 inline TraceI gather256(const std::int32_t* table, const TraceI& index) { return traced_gather(table, index); }
-inline std::array<TraceF, 2> gather256_pair(const float* table, const TraceI& index) {
-  return {traced_gather(table, index), traced_gather(table, index + 1)};
+template <class T>
+auto gather256_pair(const T* table, const TraceI& index) {
+  return std::array{traced_gather(table, index), traced_gather(table, index + 1)};
 }
 inline TraceF gather_small(const float* table, std::int32_t, const TraceI& index) {
   return traced_gather(table, index);

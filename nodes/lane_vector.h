@@ -25,6 +25,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather256_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);       \
   extern "C" void st_gather256_pair_f32_w##W(floatv<W>* at, floatv<W>* next, const float* table,             \
                                              const intv<W>* index);                                          \
+  extern "C" void st_gather256_pair_i32_w##W(intv<W>* at, intv<W>* next, const std::int32_t* table,          \
+                                             const intv<W>* index);                                          \
   extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
                                            const intv<W>* index);
 
@@ -75,6 +77,11 @@ SHADETREE_VECTOR_GATHERS(16)
   inline std::array<floatv<W>, 2> gather256_pair(const float* table, intv<W> index) {                       \
     std::array<floatv<W>, 2> result;                                                                         \
     st_gather256_pair_f32_w##W(&result[0], &result[1], table, &index);                                       \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline std::array<intv<W>, 2> gather256_pair(const std::int32_t* table, intv<W> index) {                  \
+    std::array<intv<W>, 2> result;                                                                           \
+    st_gather256_pair_i32_w##W(&result[0], &result[1], table, &index);                                       \
     return result;                                                                                           \
   }                                                                                                          \
   inline floatv<W> gather_small(const float* table, std::int32_t size, intv<W> index) {                     \

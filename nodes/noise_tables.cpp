@@ -60,6 +60,7 @@ NoiseTables make_noise_tables(std::uint32_t seed) {
   for (GradientTable* table : {&tables.gradient_x, &tables.gradient_y, &tables.gradient_z, &tables.hashed_gradient_x,
                                &tables.hashed_gradient_y, &tables.hashed_gradient_z})
     (*table)[noise_table_size] = (*table)[0];
+  tables.permutation[noise_table_size] = tables.permutation[0];
   return tables;
 }
 

@@ -10,14 +10,15 @@ namespace shadetree {
 inline constexpr int noise_table_size = 256;  // n in Perlin & Hoffert 1989 section 2.3
 inline constexpr std::uint32_t default_noise_seed = 1989;
 
-// A table of gradient components: n entries, then entry 0 once more, so
-// that the entries at slot i and at slot (i + 1) mod n are adjacent in
-// memory (a vector backend reads both as one 64-bit lookup per lane:
-// gather256_pair in nodes/lane_scalar.h).
+// Each noise table holds n entries and then entry 0 once more, so that the
+// entries at i and at (i + 1) mod n, a pair of neighbouring lattice cells,
+// are adjacent in memory: a vector backend reads both as one 64-bit lookup
+// per lane (gather256_pair in nodes/lane_scalar.h).
+using PermutationTable = std::array<std::int32_t, noise_table_size + 1>;
 using GradientTable = std::array<float, noise_table_size + 1>;
 
 struct NoiseTables {
-  std::array<std::int32_t, noise_table_size> permutation;  // P: a permutation of 0..n-1
+  PermutationTable permutation;                            // P: a permutation of 0..n-1
   GradientTable gradient_x;                                // G: unit vectors, as SoA
   GradientTable gradient_y;
   GradientTable gradient_z;

@@ -24,7 +24,7 @@ struct SamplePoints {
 
 TEST(NoiseTables, PermutationIsAPermutation) {
   const auto& permutation = tables().permutation;
-  std::set<int> values(permutation.begin(), permutation.end());
+  std::set<int> values(permutation.begin(), permutation.begin() + noise_table_size);
   EXPECT_EQ(values.size(), 256u);
   EXPECT_EQ(*values.begin(), 0);
   EXPECT_EQ(*values.rbegin(), 255);
@@ -37,9 +37,14 @@ TEST(NoiseTables, GradientsAreUnitVectors) {
   }
 }
 
-// A knot and its neighbour along x read one paired lookup (gather256_pair),
-// which needs slot 255's neighbour, slot 0, right after it.
-TEST(NoiseTables, GradientTablesRepeatTheirFirstEntryAfterTheLast) {
+// Neighbouring cells read one paired lookup (gather256_pair), which needs
+// slot 255's neighbour, slot 0, right after it.
+TEST(NoiseTables, TablesRepeatTheirFirstEntryAfterTheLast) {
+  for (int slot = 0; slot < noise_table_size; ++slot) {
+    const auto pair = gather256_pair(tables().permutation.data(), slot);
+    EXPECT_EQ(pair[0], tables().permutation[slot]);
+    EXPECT_EQ(pair[1], tables().permutation[(slot + 1) % noise_table_size]) << "slot " << slot;
+  }
   for (const GradientTable* table : {&tables().gradient_x, &tables().gradient_y, &tables().gradient_z,
                                      &tables().hashed_gradient_x, &tables().hashed_gradient_y,
                                      &tables().hashed_gradient_z}) {
@@ -64,20 +69,31 @@ TEST(Noise, IsZeroOnTheIntegerLattice) {
       for (int k : {-300, -1, 0, 1, 17, 10000}) EXPECT_EQ(noise(tables(), float(i), float(j), float(k)), 0.0f);
 }
 
-// The rows' paired lookups give what a lookup per knot gives, to the bit,
-// also where a row's cells straddle the tables' wrap (x cells 255 and 256).
-TEST(Noise, RowsOfKnotsAgreeWithKnotsOneAtATime) {
+// 1989 section 2.3 written out knot by knot, each lookup on its own:
+// noise's paired lookups (neighbouring cells read together) give the same
+// value to the bit, also where cells straddle the tables' wrap (cells 255
+// and 256 on each axis).
+TEST(Noise, PairedLookupsAgreeWithALookupPerKnot) {
+  const NoiseTables& t = tables();
+  auto phi = [&](int i) { return t.permutation[static_cast<std::size_t>(i & 255)]; };
   SamplePoints points;
   for (int n = 0; n < 20000; ++n) {
-    const float x = n % 2 ? points.next(600) : 255.0f + points.next(1) * 0.999f, y = points.next(50),
-                z = points.next(50);
-    float knot_by_knot = 0.0f;
-    for_each_noise_knot(tables(), x, y, z, [&](int slot, float u, float v, float w) {
-      const float slope = tables().hashed_gradient_x[slot] * u + tables().hashed_gradient_y[slot] * v +
-                          tables().hashed_gradient_z[slot] * w;
-      knot_by_knot = knot_by_knot + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
-    });
-    EXPECT_EQ(noise(tables(), x, y, z), knot_by_knot) << x << ", " << y << ", " << z;
+    auto coordinate = [&](float range) { return n % 2 ? points.next(range) : 255.0f + points.next(1) * 0.999f; };
+    const float p[3] = {coordinate(600), coordinate(50), coordinate(50)};
+    int cell[3];
+    for (int axis = 0; axis < 3; ++axis) cell[axis] = static_cast<int>(std::floor(p[axis]));
+    float sum = 0.0f;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+          const int slot = (cell[0] + i + phi(cell[1] + j + phi(cell[2] + k))) & 255;
+          const float u = p[0] - float(cell[0]) - float(i), v = p[1] - float(cell[1]) - float(j),
+                      w = p[2] - float(cell[2]) - float(k);
+          const float slope =
+              t.hashed_gradient_x[slot] * u + t.hashed_gradient_y[slot] * v + t.hashed_gradient_z[slot] * w;
+          sum = sum + noise_weight(u) * noise_weight(v) * noise_weight(w) * slope;
+        }
+    EXPECT_EQ(noise(t, p[0], p[1], p[2]), sum) << p[0] << ", " << p[1] << ", " << p[2];
   }
 }
 

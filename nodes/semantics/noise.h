@@ -98,23 +98,30 @@ PeriodicAxis<F> periodic_axis(F x, F period) {
   return {floor(x), period};
 }
 
-// The two knots (0, j, k) and (1, j, k) of a row along x: their slots
-// (i + phi(j + phi(k))) mod n. Where the axis hashes cell c + 1 as cell
-// c's index plus one, the second slot is the first plus one (mod n), and
-// a gradient table's entries at both are one paired lookup
-// (gather256_pair: adjacent in memory, so one 64-bit load per lane).
+// A noise table's entries at the slots (axis.index(d) + hash) mod n of a
+// pair of neighbouring cells, d = 0 and 1. Where the axis hashes cell
+// c + 1 as cell c's index plus one, the second slot is the first plus one
+// (mod n), and both entries are one paired lookup (gather256_pair:
+// adjacent in memory, so one 64-bit load per lane); a periodic axis,
+// whose last cell wraps to the first, reads them apart.
+template <class T, class Axis, class I>
+auto entries_at_cells(const T* table, const Axis& axis, I hash) {
+  auto slot = [&](int d) { return (axis.index(d) + hash) & (noise_table_size - 1); };
+  if constexpr (Axis::next_cell_hashes_next) {
+    return gather256_pair(table, slot(0));
+  } else {
+    return std::array<decltype(gather256(table, hash)), 2>{gather256(table, slot(0)), gather256(table, slot(1))};
+  }
+}
+
+// The two knots (0, j, k) and (1, j, k) of a row along x, at slots
+// (i + phi(j + phi(k))) mod n.
 template <class Axis, class I>
 struct KnotRow {
   const Axis& x_axis;
   I hash_jk;
   I slot(int di) const { return (x_axis.index(di) + hash_jk) & (noise_table_size - 1); }
-  auto entries(const float* table) const {
-    if constexpr (Axis::next_cell_hashes_next) {
-      return gather256_pair(table, slot(0));
-    } else {
-      return std::array<decltype(gather256(table, hash_jk)), 2>{gather256(table, slot(0)), gather256(table, slot(1))};
-    }
-  }
+  auto entries(const float* table) const { return entries_at_cells(table, x_axis, hash_jk); }
 };
 
 // Visits the 2^3 knots around p (1989 section 2.3) a row at a time, in the
@@ -133,13 +140,13 @@ void for_each_noise_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax
                         IntOf<F> outer_hash, Visit visit) {
   F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
   const std::array<F, 2> u{fx - 0.0f, fx - 1.0f};
+  const auto hash_k = entries_at_cells(tables.permutation.data(), az, outer_hash);  // phi(k + outer_hash)
   each_of_0_and_1([&](auto dk) {
-    auto hash_k = noise_phi(tables, az.index(dk) + outer_hash);
     F w = fz - float(dk);
+    const auto hash_jk = entries_at_cells(tables.permutation.data(), ay, hash_k[dk]);  // phi(j + phi(k))
     each_of_0_and_1([&](auto dj) {
-      auto hash_jk = noise_phi(tables, ay.index(dj) + hash_k);
       F v = fy - float(dj);
-      visit(KnotRow<Axis, decltype(hash_jk)>{ax, hash_jk}, u, v, w);
+      visit(KnotRow<Axis, IntOf<F>>{ax, hash_jk[dj]}, u, v, w);
     });
   });
 }

@@ -17,10 +17,10 @@ template <class F, class Axis, class Visit>
 void for_each_noise4_row(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
                          const Axis& az, const Axis& aw, Visit visit) {
   F fw = w - aw.corner();
+  const auto hash_l = entries_at_cells(tables.permutation.data(), aw, IntOf<F>{} + 0);  // phi(l)
   each_of_0_and_1([&](auto dl) {  // written out, as the 3D knots are
-    auto hash_l = noise_phi(tables, aw.index(dl));
     F t = fw - float(dl);
-    for_each_noise_row(tables, x, y, z, ax, ay, az, hash_l,
+    for_each_noise_row(tables, x, y, z, ax, ay, az, hash_l[dl],
                        [&](const auto& row, const std::array<F, 2>& u, F v, F s) { visit(row, u, v, s, t); });
   });
 }
