@@ -398,6 +398,10 @@ unsigned inlined_size(llvm::Function& function, std::map<llvm::Function*, unsign
 // constants read at run time. Small graphs, the common case, keep
 // everything inlined.
 constexpr unsigned inline_budget = 4000;
+// An op this small costs less inlined than its call does (arguments
+// through memory, constants read at run time), and outlining it would
+// save the compiler next to nothing.
+constexpr unsigned smallest_outlined_op = 100;
 
 void outline_large_ops(llvm::Module& module) {
   std::map<llvm::Function*, unsigned> sizes;
@@ -415,7 +419,7 @@ void outline_large_ops(llvm::Module& module) {
   for (auto& [size, function] : ops) {
     if (total <= inline_budget) break;
     const unsigned calls = static_cast<unsigned>(function->getNumUses());
-    if (calls < 2) continue;
+    if (calls < 2 || size < smallest_outlined_op) continue;
     function->removeFnAttr(llvm::Attribute::AlwaysInline);
     function->addFnAttr(llvm::Attribute::NoInline);
     total -= size * (calls - 1);
