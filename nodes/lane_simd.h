@@ -125,9 +125,22 @@ inline intv gather(const std::int32_t* table, intv index) {
 }
 inline floatv gather256(const float* table, intv index) { return gather(table, index); }
 inline intv gather256(const std::int32_t* table, intv index) { return gather(table, index); }
+// A noise table's entries at index and index + 1 (the tables keep entry 0
+// again after the last): with AVX-512, one 64-bit gather per lane split
+// into its halves, half the gathered elements of two 32-bit gathers.
 template <class T>
 auto gather256_pair(const T* table, intv index) {
-  return std::array{gather(table, index), gather(table, index + 1)};
+  using Lanes = decltype(gather(table, index));
+#if defined(__AVX512F__) && SHADETREE_SIMD_WIDTH == 16
+  const __m512i low = _mm512_i32gather_epi64(_mm512_castsi512_si256((__m512i)index), table, 4);
+  const __m512i high = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64((__m512i)index, 1), table, 4);
+  const __m512i firsts = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+  const __m512i seconds = _mm512_add_epi32(firsts, _mm512_set1_epi32(1));
+  return std::array<Lanes, 2>{(Lanes)_mm512_permutex2var_epi32(low, firsts, high),
+                              (Lanes)_mm512_permutex2var_epi32(low, seconds, high)};
+#else
+  return std::array<Lanes, 2>{gather(table, index), gather(table, index + 1)};
+#endif
 }
 inline floatv gather_small(const float* table, std::int32_t, intv index) { return gather(table, index); }
 #endif
