@@ -46,11 +46,12 @@ inline constexpr int memory_cache_kernels = 64;
 // Kernels whose machine code is in the JIT now (cached or in use).
 long resident_kernel_count();
 
-// How hard the JIT works on a kernel. full: an O3-like pipeline and the
-// optimizing code generator, for everything that runs for long. quick: the
-// op library inlined and cleaned up (SROA, CSE, CFG, dead code) and the
-// fast code generator, in about a quarter of the time, for code about 0.7x
-// as fast (docs/architecture.md): an editor's first preview of an edit,
+// How hard the JIT works on a kernel. full: a pipeline that does what O3
+// does to a kernel and the optimizing code generator, for everything that
+// runs for long. quick: the op library inlined and cleaned up (SROA, CSE,
+// CFG, dead code) and the fast code generator, in about half the time, for
+// code about 0.9x as fast (docs/architecture.md): an editor's first
+// preview of an edit,
 // until the full kernel is ready (pipeline/tiered_kernel.h). Quick kernels
 // are never cached.
 enum class Optimization { full, quick };
