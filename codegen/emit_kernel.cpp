@@ -393,10 +393,11 @@ unsigned inlined_size(llvm::Function& function, std::map<llvm::Function*, unsign
 // allocator a body that grows with the graph, and their time grows faster
 // than the body (a chain of 500 `exp` took 5 s, 100 noises more). Past a
 // budget of inlined instructions, the largest ops that a kernel calls more
-// than once are called instead, largest first, until the rest fits: each
-// is compiled once per kernel however many nodes use it, with its
-// constants read at run time. Small graphs, the common case, keep
-// everything inlined.
+// than once are called instead, largest first, until the rest fits or no
+// op of at least smallest_outlined_op instructions is left: each is
+// compiled once per kernel however many nodes use it, with its constants
+// read at run time. Small graphs, the common case, keep everything
+// inlined.
 constexpr unsigned inline_budget = 4000;
 // An op this small costs less inlined than its call does (arguments
 // through memory, constants read at run time), and outlining it would

@@ -187,12 +187,6 @@ inline IntervalInt operator*(IntervalInt a, IntervalInt b) {
   const std::int32_t p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
   return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
 }
-// a & low_bits for low_bits = 2^k - 1 (a mod 2^k): exact where a stays
-// within one run of 2^k, else the whole range.
-inline IntervalInt operator&(IntervalInt a, std::int32_t low_bits) {
-  if ((a.lo & ~low_bits) == (a.hi & ~low_bits)) return {a.lo & low_bits, a.hi & low_bits};
-  return {0, low_bits};
-}
 inline IntervalMask operator<(IntervalInt a, IntervalInt b) { return {a.lo < b.hi, !(a.hi < b.lo)}; }
 inline IntervalMask operator>=(IntervalInt a, IntervalInt b) { return negate(a < b); }
 

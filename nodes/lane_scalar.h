@@ -66,8 +66,9 @@ inline float from_bits(std::int32_t bits) {
 
 inline float gather(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather(const std::int32_t* table, std::int32_t index) { return table[index]; }
-// Lookups in a table of exactly 256 entries with index in [0, 256): the
-// noise tables, which a vector backend may hold in registers.
+// Lookups in a table of 256 entries (the noise tables, which keep entry 0
+// once more after them) with index in [0, 256): a vector backend may hold
+// such a table in registers.
 inline float gather256(const float* table, std::int32_t index) { return table[index]; }
 inline std::int32_t gather256(const std::int32_t* table, std::int32_t index) { return table[index]; }
 // A noise table's entries at index and index + 1 mod 256, index in

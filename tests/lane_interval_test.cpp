@@ -139,20 +139,6 @@ TEST(LaneInterval, GatherTakesTheHullOfTheIndexRange) {
   EXPECT_TRUE(lanes::is_everything(lanes::gather(large.data(), lanes::IntervalInt{0, lanes::max_hull_entries})));
 }
 
-// A mod 256 by the low bits, as noise hashes a cell: exact within one run
-// of 256 (negative ones too), the whole range across runs.
-TEST(LaneInterval, LowBitsOfAnIntRangeAreExactWithinOneRun) {
-  const lanes::IntervalInt within = lanes::IntervalInt{260, 300} & 255;
-  EXPECT_EQ(within.lo, 4);
-  EXPECT_EQ(within.hi, 44);
-  const lanes::IntervalInt negative = lanes::IntervalInt{-10, -1} & 255;
-  EXPECT_EQ(negative.lo, 246);
-  EXPECT_EQ(negative.hi, 255);
-  const lanes::IntervalInt across = lanes::IntervalInt{250, 260} & 255;
-  EXPECT_EQ(across.lo, 0);
-  EXPECT_EQ(across.hi, 255);
-}
-
 // The premise of noise's and improved noise's proven ranges
 // (nodes/semantics/noise_intervals.h): with weights w(t), w(1 - t) summing
 // to 1, w(t) t^2 + w(1 - t) (1 - t)^2 <= 1/4 on [0, 1].

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <vector>
 
 #include "nodes/semantics/noise.h"
 
@@ -118,6 +119,27 @@ TEST(Noise, IsPeriodicWithTheTableSize) {
 TEST(Noise, HandlesHugeAndNegativeCoordinates) {
   EXPECT_TRUE(std::isfinite(noise(tables(), 3e9f, -7e12f, 1e30f)));
   EXPECT_TRUE(std::isfinite(noise(tables(), -0.5f, -1e4f, -123.25f)));
+}
+
+// A cell's hash index is floor(x) mod 256 for every float, computed here
+// in double, and 0 for infinities and NaN; around +-2^31, where the
+// conversion to int is clamped, too (2^31 - 128 is 128 mod 256).
+TEST(Noise, CellHashIndexIsTheCellMod256ForEveryFloat) {
+  const float infinity = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (float x : {infinity, -infinity, nan}) EXPECT_EQ(lattice_coordinate(x).hash_index, 0) << x;
+  std::vector<float> xs = {0.0f, -0.0f, 0.5f, -0.5f, 255.5f, 256.0f, -256.5f, 16777217.0f, 2147483520.0f,
+                           -2147483520.0f, 2147483648.0f, -2147483648.0f, 2147483904.0f, 1e30f, -1e30f};
+  SamplePoints points;
+  for (int n = 0; n < 20000; ++n) xs.push_back(std::ldexp(points.next(1), n % 40));
+  for (float start : {2147483648.0f, -2147483648.0f, 1073741824.0f, -1073741824.0f}) {
+    float x = start;
+    for (int step = 0; step < 50; ++step, x = std::nextafter(x, 0.0f)) xs.push_back(x);
+  }
+  for (float x : xs) {
+    const double cell = std::floor(static_cast<double>(x));
+    const double mod = cell - std::floor(cell / 256.0) * 256.0;
+    EXPECT_EQ(lattice_coordinate(x).hash_index, static_cast<int>(mod)) << x;
+  }
 }
 
 TEST(Noise, NonFiniteCoordinatesStayInsideTheTables) {

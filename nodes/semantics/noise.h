@@ -33,10 +33,10 @@ I noise_phi(const NoiseTables& tables, I i) {
 // The lattice cell of a coordinate: floor(x) for the offsets, and floor(x)
 // mod n as an integer for the hash. A cell within int32 converts exactly,
 // and n being a power of two, the low bits of its two's complement are the
-// mod. Past 2^31 in magnitude every float is a multiple of 256, hence 0 mod
-// n, as are the clamp's ends; so clamping first keeps the conversion
-// defined however large x is, and an infinite or NaN coordinate (max(NaN,
-// lo) is lo) hashes as cell 0 instead of indexing outside the tables.
+// mod. Cells from 2^31 on are multiples of 256, hence 0 mod n, as are
+// those from -2^31 down; so the conversion is kept defined by clamping to
+// [-2^31, the largest float below 2^31], and a cell of 2^31 or more (or
+// NaN, or an infinity: cell 0) takes 0 instead of its clamped value.
 template <class F>
 struct LatticeCoordinate {
   F cell;               // floor(x)
@@ -46,8 +46,8 @@ struct LatticeCoordinate {
 template <class F>
 LatticeCoordinate<F> lattice_coordinate(F x) {
   F cell = floor(x);
-  F convertible = min(max(cell, splat<F>(-2147483648.0f)), splat<F>(2147483392.0f));  // -2^31, 2^31 - 256
-  return {cell, to_int(convertible) & (noise_table_size - 1)};
+  F convertible = min(max(cell, splat<F>(-2147483648.0f)), splat<F>(2147483520.0f));  // -2^31, 2^31 - 128
+  return {cell, select(cell < 2147483648.0f, to_int(convertible) & (noise_table_size - 1), IntOf<F>{} + 0)};
 }
 
 // One axis of the lattice: a coordinate's cell, and the hash index of the

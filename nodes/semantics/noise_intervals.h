@@ -100,6 +100,13 @@ Interval noise_over_cells(const NoiseTables& tables, Interval x, Interval y, Int
   });
 }
 
+// A box's lattice coordinate, by which the overloads below recognise its
+// axes: they bound noise cell by cell from each cell's own floats, so the
+// hash index of the box as a whole is never read; any slot encloses it.
+inline semantics::LatticeCoordinate<Interval> lattice_coordinate(Interval x) {
+  return {floor(x), IntervalInt{0, noise_table_size - 1}};
+}
+
 inline Interval noise_on_axes(const NoiseTables& tables, Interval x, Interval y, Interval z,
                               const semantics::LatticeAxis<Interval>&, const semantics::LatticeAxis<Interval>&,
                               const semantics::LatticeAxis<Interval>&) {
