@@ -86,10 +86,13 @@ void define_pair_lookup(llvm::Module& module, const Lookups256& how, int width, 
     llvm::Value* pairs =
         builder.CreateBitCast(memory_lookup_at(builder, how.memory, builder.getInt64Ty(), addresses, width),
                               llvm::FixedVectorType::get(element, static_cast<unsigned>(2 * width)));
+    // The entry at index is the pair's first half in memory: its low half
+    // on a little-endian target.
+    const int first_half = module.getDataLayout().isLittleEndian() ? 0 : 1;
     std::vector<int> firsts, seconds;
     for (int lane = 0; lane < width; ++lane) {
-      firsts.push_back(2 * lane);  // the low half of a little-endian pair: the entry at index
-      seconds.push_back(2 * lane + 1);
+      firsts.push_back(2 * lane + first_half);
+      seconds.push_back(2 * lane + 1 - first_half);
     }
     at = builder.CreateShuffleVector(pairs, firsts);
     next = builder.CreateShuffleVector(pairs, seconds);
