@@ -1,5 +1,6 @@
 #include "codegen/x86_table_lookups.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <llvm/IR/IRBuilder.h>
@@ -7,6 +8,7 @@
 #include <llvm/IR/Module.h>
 
 namespace shadetree {
+
 llvm::Value* x86_register_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, bool is_float,
                                        llvm::Value* table, llvm::Value* index) {
   llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
@@ -75,6 +77,15 @@ llvm::Value* narrow_index(llvm::IRBuilderBase& builder, llvm::Value* index) {
   return builder.CreateTrunc(index, llvm::FixedVectorType::get(builder.getInt8Ty(), 16));
 }
 
+// Byte indices as the first lanes of a 64-byte index register (the lanes
+// after them look up entry 0, and are not read).
+llvm::Value* index_register(llvm::IRBuilderBase& builder, llvm::Value* byte_indices) {
+  const int count = static_cast<int>(llvm::cast<llvm::FixedVectorType>(byte_indices->getType())->getNumElements());
+  std::vector<int> lanes = lanes_from(0, 64);
+  for (int& lane : lanes) lane = std::min(lane, count);  // lane `count`: the first of the zeros
+  return builder.CreateShuffleVector(byte_indices, llvm::Constant::getNullValue(byte_indices->getType()), lanes);
+}
+
 // 16 looked-up bytes from `first` on, as ints.
 llvm::Value* widen_result(llvm::IRBuilderBase& builder, llvm::Value* chosen, int first) {
   return builder.CreateZExt(builder.CreateShuffleVector(chosen, lanes_from(first, 16)),
@@ -85,11 +96,7 @@ llvm::Value* widen_result(llvm::IRBuilderBase& builder, llvm::Value* chosen, int
 
 llvm::Value* x86_byte_table_lookup(llvm::IRBuilderBase& builder, llvm::Module& module, llvm::Value* table,
                                    llvm::Value* index) {
-  // The 16 indices as the first 16 bytes of a 64-byte index register.
-  llvm::Value* narrow = narrow_index(builder, index);
-  std::vector<int> widen(64, 16);
-  for (int i = 0; i < 16; ++i) widen[i] = i;
-  llvm::Value* byte_index = builder.CreateShuffleVector(narrow, llvm::Constant::getNullValue(narrow->getType()), widen);
+  llvm::Value* byte_index = index_register(builder, narrow_index(builder, index));
   return widen_result(builder, byte_permute(builder, module, table, byte_index), 0);
 }
 
@@ -98,11 +105,7 @@ std::pair<llvm::Value*, llvm::Value*> x86_byte_table_pair_lookup(llvm::IRBuilder
   // index and index + 1 as bytes 0-15 and 16-31 (a byte's add wraps mod 256).
   llvm::Value* narrow = narrow_index(builder, index);
   llvm::Value* next = builder.CreateAdd(narrow, llvm::ConstantInt::get(narrow->getType(), 1));
-  std::vector<int> both(64, 0);
-  for (int i = 0; i < 32; ++i) both[i] = i;
-  llvm::Value* byte_index = builder.CreateShuffleVector(
-      builder.CreateShuffleVector(narrow, next, lanes_from(0, 32)),
-      llvm::Constant::getNullValue(llvm::FixedVectorType::get(builder.getInt8Ty(), 32)), both);
+  llvm::Value* byte_index = index_register(builder, builder.CreateShuffleVector(narrow, next, lanes_from(0, 32)));
   llvm::Value* chosen = byte_permute(builder, module, table, byte_index);
   return {widen_result(builder, chosen, 0), widen_result(builder, chosen, 16)};
 }

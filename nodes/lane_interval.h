@@ -23,7 +23,6 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -242,10 +241,6 @@ inline Interval gather256(const float* table, IntervalInt index) {
 }
 inline IntervalInt gather256(const std::int32_t* table, IntervalInt index) {
   return gather(table, {std::max(index.lo, 0), std::min(index.hi, 255)});
-}
-template <class T>
-auto gather256_pair(const T* table, IntervalInt index) {
-  return std::array{gather256(table, index), gather(table, {std::max(index.lo, 0) + 1, std::min(index.hi, 255) + 1})};
 }
 inline Interval gather_small(const float* table, std::int32_t, IntervalInt index) { return gather(table, index); }
 

@@ -104,13 +104,18 @@ PeriodicAxis<F> periodic_axis(F x, F period) {
 // (mod n), and both entries are one paired lookup (gather256_pair:
 // adjacent in memory, so one 64-bit load per lane); a periodic axis,
 // whose last cell wraps to the first, reads them apart.
+template <class Axis, class I>
+I cell_slot(const Axis& axis, I hash, int d) {
+  return (axis.index(d) + hash) & (noise_table_size - 1);
+}
+
 template <class T, class Axis, class I>
 auto entries_at_cells(const T* table, const Axis& axis, I hash) {
-  auto slot = [&](int d) { return (axis.index(d) + hash) & (noise_table_size - 1); };
   if constexpr (Axis::next_cell_hashes_next) {
-    return gather256_pair(table, slot(0));
+    return gather256_pair(table, cell_slot(axis, hash, 0));
   } else {
-    return std::array<decltype(gather256(table, hash)), 2>{gather256(table, slot(0)), gather256(table, slot(1))};
+    return std::array<decltype(gather256(table, hash)), 2>{gather256(table, cell_slot(axis, hash, 0)),
+                                                           gather256(table, cell_slot(axis, hash, 1))};
   }
 }
 
@@ -120,7 +125,7 @@ template <class Axis, class I>
 struct KnotRow {
   const Axis& x_axis;
   I hash_jk;
-  I slot(int di) const { return (x_axis.index(di) + hash_jk) & (noise_table_size - 1); }
+  I slot(int di) const { return cell_slot(x_axis, hash_jk, di); }
   auto entries(const float* table) const { return entries_at_cells(table, x_axis, hash_jk); }
 };
 

@@ -140,12 +140,12 @@ template <class CellAxis>
 Interval noise4_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, Interval w,
                            CellAxis cell_axis) {
   const Interval box[4] = {x, y, z, w};
+  const auto gradient = semantics::noise4_gradient_tables(tables);
+  auto gradient_at = [&](int slot) {
+    return std::array{gradient[0][slot], gradient[1][slot], gradient[2][slot], gradient[3][slot]};
+  };
   return lattice_over_cells(box, lattice_range(x, y, z, w, noise4_bound), [&](const float* corner,
                                                                                const Interval* fraction) {
-    const auto gradient = semantics::noise4_gradient_tables(tables);
-    auto gradient_at = [&](int slot) {
-      return std::array{gradient[0][slot], gradient[1][slot], gradient[2][slot], gradient[3][slot]};
-    };
     Interval sum = 0.0f;
     semantics::for_each_noise4_knot(
         tables, corner[0], corner[1], corner[2], corner[3], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
