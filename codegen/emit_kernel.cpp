@@ -28,6 +28,7 @@
 #include <llvm/Support/Error.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include "codegen/kernel_split.h"
 #include "codegen/op_library.h"
 #include "codegen/table_lookups.h"
 #include "nodes/dual_frame.h"
@@ -109,11 +110,133 @@ class KernelEmitter {
     inputs_ = &*args++;
     outputs_ = &*args++;
     llvm::Value* count = &*args;
+    Status status = emit_prelude(state);
+    if (!status) return status.error();
+    status = emit_sample_loop(function, builder_.getInt64(0), count, [&]() -> Status {
+      Status body = emit_varying(function, 0, static_cast<int>(ir_.code.size()));
+      if (body) store_outputs();
+      return body;
+    });
+    if (!status) return status.error();
+    builder_.CreateRetVoid();
+    return finish(function);
+  }
+
+  // A part of a split kernel (codegen/kernel_split.h), over samples
+  // [start, end) of a chunk:
+  //   void part(const float* state, const float* const* input_planes,
+  //             float* const* output_planes, float* scratch,
+  //             int64_t start, int64_t end)
+  // The first leaves the crossing values in scratch, each vector of them
+  // a row of kernel_split_chunk floats; the second reads them back.
+  Result<llvm::Function*> emit_part(const std::string& name, const KernelSplit& split, bool first) {
+    llvm::Function* function = part_function(name);
+    begin_body(function);
+    auto args = function->arg_begin();
+    llvm::Value* state = &*args++;
+    inputs_ = &*args++;
+    outputs_ = &*args++;
+    llvm::Value* scratch = &*args++;
+    llvm::Value* start = &*args++;
+    llvm::Value* end = &*args;
+    Status status = emit_prelude(state);
+    if (!status) return status.error();
+    status = emit_sample_loop(function, start, end, [&]() -> Status {
+      // Moves the crossing values to scratch (first part) or back.
+      auto cross = [&] {
+        int row = 0;
+        for (int value : split.crossing)
+          for (int vector = 0; vector < stored_components(ir_.code[value]); ++vector, ++row) {
+            llvm::Value* offset = builder_.CreateAdd(builder_.CreateSub(index_, start),
+                                                     builder_.getInt64(std::int64_t{kernel_split_chunk} * row));
+            llvm::Value* address = builder_.CreateInBoundsGEP(float_, scratch, offset);
+            if (first)
+              builder_.CreateAlignedStore(load_stored(value, vector), address, llvm::Align(4));
+            else
+              store_stored(value, vector, builder_.CreateAlignedLoad(vector_, address, llvm::Align(4)));
+          }
+      };
+      if (!first) cross();
+      Status body = first ? emit_varying(function, 0, split.cut)
+                          : emit_varying(function, split.cut, static_cast<int>(ir_.code.size()));
+      if (!body) return body;
+      if (first)
+        cross();
+      else
+        store_outputs();
+      return success();
+    });
+    if (!status) return status.error();
+    builder_.CreateRetVoid();
+    return finish(function);
+  }
+
+  // The run function of a split kernel: both parts, chunk by chunk, the
+  // crossing values in a scratch block on the stack.
+  Result<llvm::Function*> emit_split_run(const std::string& name, llvm::Function* first, llvm::Function* second,
+                                         const KernelSplit& split) {
+    llvm::Function* function = llvm::Function::Create(
+        llvm::FunctionType::get(builder_.getVoidTy(), {ptr_, ptr_, ptr_, builder_.getInt64Ty()}, false),
+        llvm::Function::ExternalLinkage, name, module_);
+    builder_.SetInsertPoint(llvm::BasicBlock::Create(context_, "entry", function));
+    auto args = function->arg_begin();
+    llvm::Value* state = &*args++;
+    llvm::Value* inputs = &*args++;
+    llvm::Value* outputs = &*args++;
+    llvm::Value* count = &*args;
+    llvm::AllocaInst* scratch = builder_.CreateAlloca(
+        llvm::ArrayType::get(float_, static_cast<std::uint64_t>(std::max(1, split.crossing_vectors)) * kernel_split_chunk));
+    scratch->setAlignment(llvm::Align(64));
+    llvm::BasicBlock* entry = builder_.GetInsertBlock();
+    llvm::BasicBlock* loop = llvm::BasicBlock::Create(context_, "chunk", function);
+    llvm::BasicBlock* exit = llvm::BasicBlock::Create(context_, "exit", function);
+    builder_.CreateCondBr(builder_.CreateICmpSGT(count, builder_.getInt64(0)), loop, exit);
+    builder_.SetInsertPoint(loop);
+    llvm::PHINode* start = builder_.CreatePHI(builder_.getInt64Ty(), 2, "chunk_start");
+    start->addIncoming(builder_.getInt64(0), entry);
+    llvm::Value* next = builder_.CreateAdd(start, builder_.getInt64(kernel_split_chunk), "next_chunk");
+    llvm::Value* end = builder_.CreateSelect(builder_.CreateICmpSLT(next, count), next, count);
+    for (llvm::Function* part : {first, second}) builder_.CreateCall(part, {state, inputs, outputs, scratch, start, end});
+    start->addIncoming(next, loop);
+    builder_.CreateCondBr(builder_.CreateICmpSLT(next, count), loop, exit);
+    builder_.SetInsertPoint(exit);
+    builder_.CreateRetVoid();
+    return finish(function);
+  }
+
+  // The declaration of a part of a split kernel.
+  llvm::Function* part_function(const std::string& name) {
+    if (llvm::Function* declared = module_.getFunction(name)) return declared;
+    auto* type = llvm::FunctionType::get(builder_.getVoidTy(), {ptr_, ptr_, ptr_, ptr_, builder_.getInt64Ty(), builder_.getInt64Ty()}, false);
+    return llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+  }
+
+ private:
+  llvm::Function* begin_function(const std::string& name, std::vector<llvm::Type*> parameters) {
+    auto* type = llvm::FunctionType::get(builder_.getVoidTy(), parameters, false);
+    llvm::Function* function = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
+    begin_body(function);
+    return function;
+  }
+
+  // The entry block of `function`, with a register for every value.
+  void begin_body(llvm::Function* function) {
+    entry_ = llvm::BasicBlock::Create(context_, "entry", function);
+    builder_.SetInsertPoint(entry_);
+    registers_.clear();
+    for (const IrInstr& instr : ir_.code)
+      registers_.push_back(
+          builder_.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(stored_components(instr)))));
+  }
+
+  // Constants, and the uniform values the bind function left in `state`,
+  // before the sample loop.
+  Status emit_prelude(llvm::Value* state) {
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       const IrInstr& instr = ir_.code[i];
       if (instr.kind == IrOpKind::constant) {
         Status status = emit_instruction(static_cast<int>(i));
-        if (!status) return status.error();
+        if (!status) return status;
       }
       if (state_.slots[i] < 0) continue;
       for (int c = 0; c < component_count(instr.type); ++c)
@@ -121,20 +244,37 @@ class KernelEmitter {
               splat(builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(
                                                     float_, state, static_cast<unsigned>(state_.slots[i] + c)))));
     }
+    return success();
+  }
 
+  // A loop over the samples from `begin` to `end`, `width_` at a time:
+  // index_ is the first sample of an iteration, whose code `body` emits.
+  template <class Body>
+  Status emit_sample_loop(llvm::Function* function, llvm::Value* begin, llvm::Value* end, Body body) {
     llvm::BasicBlock* entry = builder_.GetInsertBlock();
     llvm::BasicBlock* loop = llvm::BasicBlock::Create(context_, "loop", function);
     llvm::BasicBlock* exit = llvm::BasicBlock::Create(context_, "exit", function);
-    builder_.CreateCondBr(builder_.CreateICmpSGT(count, builder_.getInt64(0)), loop, exit);
+    builder_.CreateCondBr(builder_.CreateICmpSLT(begin, end), loop, exit);
     builder_.SetInsertPoint(loop);
     llvm::PHINode* index = builder_.CreatePHI(builder_.getInt64Ty(), 2, "sample");
-    index->addIncoming(builder_.getInt64(0), entry);
+    index->addIncoming(begin, entry);
     index_ = index;
+    Status status = body();
+    if (!status) return status;
+    llvm::Value* next = builder_.CreateAdd(index_, builder_.getInt64(width_), "next_sample");
+    index->addIncoming(next, builder_.GetInsertBlock());
+    builder_.CreateCondBr(builder_.CreateICmpSLT(next, end), loop, exit);
+    builder_.SetInsertPoint(exit);
+    return success();
+  }
 
-    llvm::Value* all_lanes = llvm::ConstantInt::getTrue(llvm::FixedVectorType::get(builder_.getInt1Ty(), width_));
+  // The varying instructions from `begin` to `end` (outside any region at
+  // both ends): a region becomes a branch over its blocks, taken when any
+  // lane takes it.
+  Status emit_varying(llvm::Function* function, int begin, int end) {
+    llvm::Value* mask = llvm::ConstantInt::getTrue(llvm::FixedVectorType::get(builder_.getInt1Ty(), width_));
     std::vector<std::pair<llvm::Value*, llvm::BasicBlock*>> regions;  // (outer mask, merge block)
-    llvm::Value* mask = all_lanes;
-    for (std::size_t i = 0; i < ir_.code.size(); ++i) {
+    for (int i = begin; i < end; ++i) {
       const IrInstr& instr = ir_.code[i];
       if (instr.uniform) continue;
       if (instr.kind == IrOpKind::begin_region) {
@@ -159,29 +299,10 @@ class KernelEmitter {
         regions.pop_back();
         continue;
       }
-      Status status = emit_instruction(static_cast<int>(i));
-      if (!status) return status.error();
+      Status status = emit_instruction(i);
+      if (!status) return status;
     }
-    store_outputs();
-    llvm::Value* next = builder_.CreateAdd(index_, builder_.getInt64(width_), "next_sample");
-    index->addIncoming(next, builder_.GetInsertBlock());
-    builder_.CreateCondBr(builder_.CreateICmpSLT(next, count), loop, exit);
-    builder_.SetInsertPoint(exit);
-    builder_.CreateRetVoid();
-    return finish(function);
-  }
-
- private:
-  llvm::Function* begin_function(const std::string& name, std::vector<llvm::Type*> parameters) {
-    auto* type = llvm::FunctionType::get(builder_.getVoidTy(), parameters, false);
-    llvm::Function* function = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
-    entry_ = llvm::BasicBlock::Create(context_, "entry", function);
-    builder_.SetInsertPoint(entry_);
-    registers_.clear();
-    for (const IrInstr& instr : ir_.code)
-      registers_.push_back(
-          builder_.CreateAlloca(llvm::ArrayType::get(vector_, static_cast<std::uint64_t>(stored_components(instr)))));
-    return function;
+    return success();
   }
 
   Result<llvm::Function*> finish(llvm::Function* function) {
@@ -207,6 +328,16 @@ class KernelEmitter {
 
   void store(int value, int component, llvm::Value* vector, int part = 0) {
     builder_.CreateStore(vector, component_pointer(value, component, part));
+  }
+
+  // Vector `vector` of value v's register, of stored_components(v).
+  llvm::Value* stored_pointer(int value, int vector) {
+    return builder_.CreateConstInBoundsGEP2_32(registers_[value]->getAllocatedType(), registers_[value], 0,
+                                               static_cast<unsigned>(vector));
+  }
+  llvm::Value* load_stored(int value, int vector) { return builder_.CreateLoad(vector_, stored_pointer(value, vector)); }
+  void store_stored(int value, int vector, llvm::Value* contents) {
+    builder_.CreateStore(contents, stored_pointer(value, vector));
   }
 
   // A pointer to `components` consecutive vectors holding argument `value`
@@ -331,8 +462,7 @@ class KernelEmitter {
   // dual: codegen/ops_bitcode.cpp.
   Status emit_op(int self) {
     const IrInstr& instr = ir_.code[self];
-    const std::string symbol =
-        std::string("st_") + op_symbol(instr.op) + (instr.dual ? "_dual" : "") + "_w" + std::to_string(width_);
+    const std::string symbol = op_library_symbol(instr.op, instr.dual, width_);
     llvm::Function* callee = module_.getFunction(symbol);
     if (!callee) return failure("codegen: the op library has no " + symbol);
     std::vector<llvm::Value*> arguments{component_pointer(self, 0)};
@@ -406,27 +536,36 @@ constexpr unsigned inline_budget = 3400;
 // save the compiler next to nothing.
 constexpr unsigned smallest_outlined_op = 100;
 
-void outline_large_ops(llvm::Module& module) {
+// Outlines by the whole kernel's calls (`ir`'s op instructions), so that
+// the two modules of a split kernel decide as the kernel would whole.
+bool outline_large_ops(llvm::Module& module, const ShadeIR& ir, int width) {
+  std::map<std::string, unsigned> calls;
+  for (const IrInstr& instr : ir.code)
+    if (instr.kind == IrOpKind::op) ++calls[op_library_symbol(instr.op, instr.dual, width)];
   std::map<llvm::Function*, unsigned> sizes;
-  std::vector<std::pair<unsigned, llvm::Function*>> ops;  // (size, op)
+  std::vector<std::pair<unsigned, std::pair<llvm::Function*, unsigned>>> ops;  // (size, (op, calls))
   unsigned total = 0;
-  for (llvm::Function& function : module) {
-    if (function.isDeclaration() || !function.getName().starts_with("st_") ||
-        function.getName().starts_with("st_gather") || function.use_empty())
-      continue;
-    const unsigned size = inlined_size(function, sizes);
-    total += size * static_cast<unsigned>(function.getNumUses());
-    ops.push_back({size, &function});
+  for (const auto& [symbol, count] : calls) {
+    llvm::Function* function = module.getFunction(symbol);
+    if (!function) continue;
+    if (llvm::Error error = function->materialize()) {
+      llvm::consumeError(std::move(error));
+      return false;
+    }
+    const unsigned size = inlined_size(*function, sizes);
+    total += size * count;
+    ops.push_back({size, {function, count}});
   }
   std::sort(ops.begin(), ops.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (auto& [size, function] : ops) {
+  for (auto& [size, op] : ops) {
+    auto [function, count] = op;
     if (total <= inline_budget) break;
-    const unsigned calls = static_cast<unsigned>(function->getNumUses());
-    if (calls < 2 || size < smallest_outlined_op) continue;
+    if (count < 2 || size < smallest_outlined_op) continue;
     function->removeFnAttr(llvm::Attribute::AlwaysInline);
     function->addFnAttr(llvm::Attribute::NoInline);
-    total -= size * (calls - 1);
+    total -= size * (count - 1);
   }
+  return true;
 }
 
 // Reads the bodies of the library functions the kernel calls, and of those
@@ -449,7 +588,8 @@ bool materialize_called(llvm::Module& module) {
 }  // namespace
 
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
-                                                         const std::string& function_name, GatherStrategy gathers) {
+                                                         const std::string& function_name, GatherStrategy gathers,
+                                                         KernelPart part, const KernelSplit& split) {
   if (width != 4 && width != 8 && width != 16) return invalid_input("vector width must be 4, 8 or 16");
   std::unique_ptr<llvm::Module> module = load_op_library(context, width);
   if (!module) return failure("the embedded op library bitcode is unreadable");
@@ -469,18 +609,36 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   for (llvm::GlobalVariable& global : module->globals())
     if (!global.isDeclaration()) global.setLinkage(llvm::GlobalValue::InternalLinkage);
   KernelEmitter emitter(ir, width, *module);
-  Result<llvm::Function*> bind = emitter.emit_bind(function_name + "_bind");
-  if (!bind) return bind.error();
-  Result<llvm::Function*> run = emitter.emit_run(function_name + "_run");
-  if (!run) return run.error();
+  std::vector<llvm::Function*> entry_points;
+  if (part == KernelPart::first) {
+    Result<llvm::Function*> first = emitter.emit_part(function_name + "_first", split, true);
+    if (!first) return first.error();
+    entry_points = {*first};
+  } else {
+    Result<llvm::Function*> bind = emitter.emit_bind(function_name + "_bind");
+    if (!bind) return bind.error();
+    // The second part is inlined into the run function, which calls the
+    // first part in the other module.
+    auto split_run = [&]() -> Result<llvm::Function*> {
+      Result<llvm::Function*> second = emitter.emit_part(function_name + "_second", split, false);
+      if (!second) return second.error();
+      (*second)->setLinkage(llvm::GlobalValue::InternalLinkage);
+      (*second)->addFnAttr(llvm::Attribute::AlwaysInline);
+      return emitter.emit_split_run(function_name + "_run", emitter.part_function(function_name + "_first"), *second,
+                                    split);
+    };
+    Result<llvm::Function*> run = part == KernelPart::second ? split_run() : emitter.emit_run(function_name + "_run");
+    if (!run) return run.error();
+    entry_points = {*bind, *run};
+  }
   if (!materialize_called(*module)) return failure("the embedded op library bitcode is unreadable");
-  outline_large_ops(*module);
+  if (!outline_large_ops(*module, ir, width)) return failure("the embedded op library bitcode is unreadable");
   // Drop the library functions this kernel never calls (other ops, dual
   // forms) before the optimizer spends time on them.
   for (bool erased = true; erased;) {
     erased = false;
     for (llvm::Function& function : llvm::make_early_inc_range(*module)) {
-      if (&function == *bind || &function == *run || !function.use_empty()) continue;
+      if (std::ranges::find(entry_points, &function) != entry_points.end() || !function.use_empty()) continue;
       function.eraseFromParent();
       erased = true;
     }

@@ -10,7 +10,9 @@
 //     vector width), `width` samples at a time as <width x float> vectors.
 //
 // uniform_globals and input_planes follow the globals table
-// (nodes/globals.h); output_planes the graph kind's output layout.
+// (nodes/globals.h); output_planes the graph kind's output layout. A large
+// kernel is emitted as two modules instead (KernelPart below), whose
+// NAME_bind and NAME_run are the same functions.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "codegen/kernel_split.h"
 #include "graph/diagnostic.h"
 #include "ir/kernel.h"
 #include "ir/shade_ir.h"
@@ -50,10 +53,21 @@ UniformStateLayout uniform_state_layout(const ShadeIR& ir);
 // knots (up to 32 floats) are in registers in the last three.
 enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes, byte_permutes_and_gathers };
 
-// The module holds the kernel's two functions (`function_name` + "_bind"
-// and "_run") and the op library they call, marked for inlining.
+// Which module of a kernel to emit: the whole kernel, or a part of one
+// split in two (codegen/kernel_split.h). The first part's module defines
+//   void NAME_first(const float* state, const float* const* input_planes,
+//                   float* const* output_planes, float* scratch,
+//                   int64_t start, int64_t end);
+// the second's defines NAME_bind and NAME_run, which calls NAME_first.
+enum class KernelPart { whole, first, second };
+
+// The module holds the kernel's functions (`function_name` + "_bind" and
+// "_run", or the part's) and the op library they call, marked for
+// inlining. `split` says where a part begins and ends.
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                          const std::string& function_name,
-                                                         GatherStrategy gathers = GatherStrategy::hardware);
+                                                         GatherStrategy gathers = GatherStrategy::hardware,
+                                                         KernelPart part = KernelPart::whole,
+                                                         const KernelSplit& split = {});
 
 }  // namespace shadetree

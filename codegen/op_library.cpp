@@ -1,6 +1,11 @@
 #include "codegen/op_library.h"
 
+#include <map>
+#include <mutex>
+#include <utility>
+
 #include <llvm/Bitcode/BitcodeReader.h>
+#include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/Support/Error.h>
 #include <llvm/Support/MemoryBuffer.h>
@@ -49,6 +54,31 @@ std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context, int wi
     return nullptr;
   }
   return std::move(*module);
+}
+
+std::string op_library_symbol(OpId op, bool dual, int width) {
+  return std::string("st_") + op_symbol(op) + (dual ? "_dual" : "") + "_w" + std::to_string(width);
+}
+
+unsigned op_library_instructions(const std::string& symbol, int width) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, int>, unsigned> sizes;
+  static llvm::LLVMContext* context = new llvm::LLVMContext;  // never destroyed, like the JIT
+  static auto* libraries = new std::map<int, std::unique_ptr<llvm::Module>>;
+  std::lock_guard lock(mutex);
+  const auto key = std::make_pair(symbol, width);
+  if (auto found = sizes.find(key); found != sizes.end()) return found->second;
+  std::unique_ptr<llvm::Module>& library = (*libraries)[width];
+  if (!library) library = load_op_library(*context, width);
+  llvm::Function* function = library ? library->getFunction(symbol) : nullptr;
+  unsigned size = 0;
+  if (function && !function->isDeclaration()) {
+    if (llvm::Error error = function->materialize())
+      llvm::consumeError(std::move(error));
+    else
+      size = function->getInstructionCount();
+  }
+  return sizes[key] = size;
 }
 
 }  // namespace shadetree

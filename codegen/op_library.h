@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+
+#include "nodes/op_id.h"
 
 namespace llvm {
 class LLVMContext;
@@ -18,6 +21,15 @@ namespace shadetree {
 // functions, and reading them all took 10 ms of every compile). Null for
 // another width, or if the embedded bitcode is unreadable (a build fault).
 std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context, int width);
+
+// The library function of `op` at `width`, over duals if `dual`:
+// st_<op>_w<W> or st_<op>_dual_w<W> (codegen/ops_bitcode.cpp).
+std::string op_library_symbol(OpId op, bool dual, int width);
+
+// The instructions of the library function `symbol` (0 if there is none),
+// read once per process: what inlining the op costs a kernel, known
+// before the kernel is emitted.
+unsigned op_library_instructions(const std::string& symbol, int width);
 
 // A hash of the libraries' bitcode: part of every kernel cache key, so
 // that a rebuilt shadetree never loads kernels made from older semantics.

@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include <llvm/ExecutionEngine/Orc/CompileUtils.h>
@@ -22,6 +25,7 @@
 #include <llvm/Support/xxhash.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include "codegen/kernel_split.h"
 #include "codegen/op_library.h"
 #include "jit/host_target.h"
 #include "jit/kernel_object_cache.h"
@@ -107,6 +111,16 @@ std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) 
   return text.str();
 }
 
+// A kernel's object files: the one with its bind and run functions first,
+// then a split kernel's first part (codegen/kernel_split.h).
+using KernelObjects = std::vector<std::unique_ptr<llvm::MemoryBuffer>>;
+
+// The names the objects of kernel `name` are cached under, in that order.
+std::vector<std::string> object_names(const std::string& name, const std::optional<KernelSplit>& split) {
+  if (!split) return {name};
+  return {name, name + "_first"};
+}
+
 std::string kernel_name(const std::string& key) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(llvm::xxh3_64bits(llvm::StringRef(key))));
@@ -139,10 +153,10 @@ class Jit {
     if (settings.cold || optimization == Optimization::quick) {
       if (cached_only) return compiled({}, CacheHit::none, 0);
       name += (optimization == Optimization::quick ? "_quick" : "_cold") + std::to_string(++uncached_compiles_);
-      Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers, optimization);
-      if (!object) return object.error();
+      Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
+      if (!objects) return objects.error();
       std::lock_guard lock(mutex_);
-      Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
+      Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(*objects));
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
     }
@@ -153,26 +167,40 @@ class Jit {
       if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
         return compiled(code, CacheHit::memory, elapsed());
       if (!folder.empty()) {
-        const std::filesystem::path file = folder / (name + ".o");
-        if (auto object = llvm::MemoryBuffer::getFile(file.string())) {
-          Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
+        // Every object of the kernel, or none (the folder is pruned object
+        // by object).
+        KernelObjects objects;
+        std::vector<std::filesystem::path> files;
+        for (const std::string& object_name : object_names(name, kernel_split(ir, width))) {
+          files.push_back(folder / (object_name + ".o"));
+          auto object = llvm::MemoryBuffer::getFile(files.back().string());
+          if (!object) break;
+          objects.push_back(std::move(*object));
+        }
+        if (objects.size() == files.size()) {
+          Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(objects));
           if (code) {
             std::error_code ignored;  // recently used: the last to be pruned
-            std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
+            for (const std::filesystem::path& file : files)
+              std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
             return admit(*code, CacheHit::disk, elapsed(), evicted);
           }
         }
       }
     }
     if (cached_only) return compiled({}, CacheHit::none, 0);
-    Result<std::unique_ptr<llvm::MemoryBuffer>> object = compile_object(ir, width, name, gathers, optimization);
-    if (!object) return object.error();
-    if (!folder.empty()) store_kernel_object(folder, name, (*object)->getBuffer(), settings.disk_cache_objects);
+    Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
+    if (!objects) return objects.error();
+    if (!folder.empty()) {
+      const std::vector<std::string> names = object_names(name, kernel_split(ir, width));
+      for (std::size_t i = 0; i < names.size(); ++i)
+        store_kernel_object(folder, names[i], (*objects)[i]->getBuffer(), settings.disk_cache_objects);
+    }
     std::lock_guard lock(mutex_);
     // Another thread may have compiled the same program meanwhile.
     if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
       return compiled(code, CacheHit::none, elapsed());
-    Result<std::shared_ptr<const KernelCode>> code = add_object(name, width, std::move(*object));
+    Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(*objects));
     if (!code) return code.error();
     return admit(*code, CacheHit::none, elapsed(), evicted);
   }
@@ -226,34 +254,74 @@ class Jit {
     jit_ = std::move(*jit);
   }
 
-  // The calling thread's target machine at `level`, made at its first
-  // compile: making one costs as much as compiling a small kernel.
-  Result<llvm::TargetMachine*> thread_target_machine(llvm::CodeGenOptLevel level) const {
-    thread_local std::map<llvm::CodeGenOptLevel, std::unique_ptr<llvm::TargetMachine>> machines;
-    std::unique_ptr<llvm::TargetMachine>& machine = machines[level];
+  // A target machine at `level`, lent to one compile and kept for the next
+  // when the compile lets it go: making one costs as much as compiling a
+  // small kernel, and a TargetMachine is not safe to share between
+  // threads at once.
+  using LentMachine = std::unique_ptr<llvm::TargetMachine, std::function<void(llvm::TargetMachine*)>>;
+  Result<LentMachine> lend_machine(llvm::CodeGenOptLevel level) const {
+    std::unique_ptr<llvm::TargetMachine> machine;
+    {
+      std::lock_guard lock(machines_mutex_);
+      if (auto idle = idle_machines_.find(level); idle != idle_machines_.end()) {
+        machine = std::move(idle->second);
+        idle_machines_.erase(idle);
+      }
+    }
     if (!machine) {
       Result<std::unique_ptr<llvm::TargetMachine>> made = target_machine(level);
       if (!made) return made.error();
       machine = std::move(*made);
     }
-    return machine.get();
+    return LentMachine(machine.release(), [this, level](llvm::TargetMachine* returned) {
+      std::lock_guard lock(machines_mutex_);
+      idle_machines_.emplace(level, std::unique_ptr<llvm::TargetMachine>(returned));
+    });
   }
 
-  // The kernel's object file, built on the calling thread.
+  // The kernel's object files: a kernel past the split threshold as two
+  // modules compiled side by side, its first part on a thread of its own
+  // (which inherits the calling thread's priority).
+  Result<KernelObjects> compile_objects(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
+                                        Optimization optimization) const {
+    const std::optional<KernelSplit> split = kernel_split(ir, width);
+    KernelObjects objects;
+    if (!split) {
+      Result<std::unique_ptr<llvm::MemoryBuffer>> object =
+          compile_object(ir, width, name, gathers, optimization, KernelPart::whole, {});
+      if (!object) return object.error();
+      objects.push_back(std::move(*object));
+      return objects;
+    }
+    std::optional<Result<std::unique_ptr<llvm::MemoryBuffer>>> first;
+    std::thread first_part([&] { first = compile_object(ir, width, name, gathers, optimization, KernelPart::first, *split); });
+    Result<std::unique_ptr<llvm::MemoryBuffer>> second =
+        compile_object(ir, width, name, gathers, optimization, KernelPart::second, *split);
+    first_part.join();
+    if (!second) return second.error();
+    if (!*first) return first->error();
+    objects.push_back(std::move(*second));
+    objects.push_back(std::move(**first));
+    return objects;
+  }
+
+  // The object file of the kernel's module `part`, built on the calling
+  // thread.
   Result<std::unique_ptr<llvm::MemoryBuffer>> compile_object(const ShadeIR& ir, int width, const std::string& name,
-                                                             GatherStrategy gathers, Optimization optimization) const {
-    Result<llvm::TargetMachine*> machine = thread_target_machine(code_generation_level(optimization));
+                                                             GatherStrategy gathers, Optimization optimization,
+                                                             KernelPart part, const KernelSplit& split) const {
+    Result<LentMachine> machine = lend_machine(code_generation_level(optimization));
     if (!machine) return machine.error();
     llvm::LLVMContext context;
     Result<std::unique_ptr<llvm::Module>> module =
-        build_optimized_module(ir, width, context, name, gathers, **machine, optimization);
+        build_optimized_module(ir, width, context, name, gathers, **machine, optimization, part, split);
     if (!module) return module.error();
     // Instruction selection, scheduling and greedy register allocation grow
     // faster than the kernel: a 4000-instruction graph spent 2 s there. A
     // kernel this large is compiled with the fast, linear path instead
     // (slower code, a compile in a fraction of the time).
     if ((*module)->getInstructionCount() > max_instructions_for_full_codegen) {
-      machine = thread_target_machine(llvm::CodeGenOptLevel::None);
+      machine = lend_machine(llvm::CodeGenOptLevel::None);
       if (!machine) return machine.error();
     }
     auto object = llvm::orc::SimpleCompiler(**machine)(**module);
@@ -261,13 +329,13 @@ class Jit {
     return std::move(*object);
   }
 
-  Result<std::shared_ptr<const KernelCode>> add_object(const std::string& name, int width,
-                                                       std::unique_ptr<llvm::MemoryBuffer> object) {
+  Result<std::shared_ptr<const KernelCode>> add_objects(const std::string& name, int width, KernelObjects objects) {
     llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
-    if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object))) {
-      llvm::consumeError(tracker->remove());
-      return failure("JIT: " + error_text(std::move(error)));
-    }
+    for (std::unique_ptr<llvm::MemoryBuffer>& object : objects)
+      if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object))) {
+        llvm::consumeError(tracker->remove());
+        return failure("JIT: " + error_text(std::move(error)));
+      }
     return look_up(name, width, tracker);
   }
 
@@ -336,6 +404,8 @@ class Jit {
   std::map<std::string, std::weak_ptr<const KernelCode>> resident_;  // every kernel in the JIT, by name
   std::vector<std::shared_ptr<const KernelCode>> recent_;            // the memory cache, most recent first
   std::atomic<int> uncached_compiles_{0};  // cold and quick: each under a name of its own
+  mutable std::mutex machines_mutex_;
+  mutable std::multimap<llvm::CodeGenOptLevel, std::unique_ptr<llvm::TargetMachine>> idle_machines_;  // lent by lend_machine
 };
 
 }  // namespace
@@ -365,14 +435,30 @@ Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing
   Result<std::unique_ptr<llvm::TargetMachine>> machine =
       Jit::instance().target_machine(code_generation_level(settings.optimization));
   if (!machine) return machine.error();
-  llvm::LLVMContext context;
-  Result<std::unique_ptr<llvm::Module>> module = build_optimized_module(
-      ir, width, context, "shade_kernel", effective_gathers(settings), **machine, settings.optimization);
-  if (!module) return module.error();
-  if (listing == Listing::assembly) return assembly(**module, **machine);
+  // A split kernel's modules one after the other, each under a heading.
+  const std::optional<KernelSplit> split = kernel_split(ir, width);
+  const std::vector<KernelPart> parts =
+      split ? std::vector<KernelPart>{KernelPart::first, KernelPart::second} : std::vector<KernelPart>{KernelPart::whole};
+  const char* comment = listing == Listing::assembly ? "#" : ";";
   std::string text;
-  llvm::raw_string_ostream stream(text);
-  (*module)->print(stream, nullptr);
+  for (KernelPart part : parts) {
+    if (split)
+      text += std::string(comment) + " module " + (part == KernelPart::first ? "1" : "2") +
+              " of 2: the kernel split before instruction %" + std::to_string(split->cut) + "\n";
+    llvm::LLVMContext context;
+    Result<std::unique_ptr<llvm::Module>> module =
+        build_optimized_module(ir, width, context, "shade_kernel", effective_gathers(settings), **machine,
+                               settings.optimization, part, split.value_or(KernelSplit{}));
+    if (!module) return module.error();
+    if (listing == Listing::assembly) {
+      Result<std::string> code = assembly(**module, **machine);
+      if (!code) return code.error();
+      text += *code;
+      continue;
+    }
+    llvm::raw_string_ostream stream(text);
+    (*module)->print(stream, nullptr);
+  }
   return text;
 }
 

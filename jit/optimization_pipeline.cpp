@@ -56,8 +56,9 @@ void optimize_module(llvm::Module& module, llvm::TargetMachine& machine, Optimiz
 
 Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                              const std::string& name, GatherStrategy gathers,
-                                                             llvm::TargetMachine& machine, Optimization optimization) {
-  Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers);
+                                                             llvm::TargetMachine& machine, Optimization optimization,
+                                                             KernelPart part, const KernelSplit& split) {
+  Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers, part, split);
   if (!module) return module.error();
   llvm::Module& m = **module;
   m.setDataLayout(machine.createDataLayout());

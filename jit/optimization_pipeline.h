@@ -22,10 +22,13 @@ namespace shadetree {
 
 llvm::CodeGenOptLevel code_generation_level(Optimization optimization);
 
-// The kernel module of `ir`, made for `machine` and optimized.
+// The kernel module of `ir` (or of a part of it: emit_kernel_module),
+// made for `machine` and optimized.
 Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                              const std::string& name, GatherStrategy gathers,
-                                                             llvm::TargetMachine& machine, Optimization optimization);
+                                                             llvm::TargetMachine& machine, Optimization optimization,
+                                                             KernelPart part = KernelPart::whole,
+                                                             const KernelSplit& split = {});
 
 // The module's assembly for `machine`.
 Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine);

@@ -13,10 +13,12 @@
 #include "pipeline/compile_graph.h"
 #include "support/differential_samples.h"
 #include "support/gallery.h"
+#include "support/graph_text.h"
 #include "support/random_graph.h"
 #include "support/test_files.h"
 #include "interp/interpreter.h"
 #include "ir/verify.h"
+#include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
 #include "graph/check.h"
 #include "nodes/limits.h"
@@ -279,6 +281,48 @@ TEST(LimitsDifferential, HugeKernelsAgree) {
       compile_text(std::string(header) + R"("nodes": [)" + nodes + R"(], "outputs": {"color": "m2000"}})");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   EXPECT_EQ(compare_backends("exp chain", loaded->ir, loaded->params, 8), "");
+}
+
+// --- kernels split in two (codegen/kernel_split.h) ------------------------
+
+// Turbulence, fbm in a region, noise and its gradient, a spline: enough
+// for a kernel past the split threshold.
+const std::string split_graph = testing::graph_text(
+    R"({"id": "p", "op": "P"}, {"id": "q", "op": "mul", "in": {"a": "p", "b": 3}},
+       {"id": "t", "op": "turbulence", "in": {"p": "q", "octaves": 6}},
+       {"id": "f", "op": "fbm", "in": {"p": "q", "octaves": 5}},
+       {"id": "c", "op": "lt", "in": {"a": "t", "b": 0.3}},
+       {"id": "r", "op": "if", "in": {"cond": "c", "then": "t", "else": "f"}},
+       {"id": "q2", "op": "mul", "in": {"a": "q", "b": 2}}, {"id": "n", "op": "noise", "in": {"p": "q2"}},
+       {"id": "g", "op": "gradient", "in": {"x": "n"}}, {"id": "s", "op": "add", "in": {"a": "r", "b": "n"}},
+       {"id": "k", "op": "spline", "in": {"x": "s"}, "basis": "catmull-rom",
+        "knots": [[0, 0, 0], [0, 0.1, 0.2], [0.5, 0.4, 0.3], [1, 0.9, 0.6], [1, 1, 1]]},
+       {"id": "gg", "op": "dot", "in": {"a": "g", "b": "g"}}, {"id": "m", "op": "mul", "in": {"a": "k", "b": "gg"}})",
+    R"("color": "m")");
+
+// The two parts pass the values that cross the cut (here one computed in
+// a region) through scratch, chunk by chunk, over a sample count that is
+// no multiple of the chunk; the result is the interpreter's to the bit.
+TEST(SplitKernelDifferential, KernelsSplitInTwoAgree) {
+  Result<LoadedGraph> loaded = compile_text(split_graph);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (int width : {4, 8, 16}) {
+    Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
+    ASSERT_TRUE(listing.ok()) << listing.error().to_string();
+    EXPECT_NE(listing->find("; module 2 of 2"), std::string::npos) << "width " << width << ": compiled whole";
+    EXPECT_EQ(compare_backends("split", loaded->ir, loaded->params, width), "");
+    EXPECT_EQ(compare_backends("split", loaded->ir, loaded->params, width, std::nullopt, Optimization::quick), "");
+  }
+}
+
+// A small kernel compiles whole: one module.
+TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
+  Result<LoadedGraph> loaded = compile_text(
+      testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "n", "op": "noise", "in": {"p": "p"}})", R"("color": "n")"));
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  Result<std::string> listing = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(listing.ok()) << listing.error().to_string();
+  EXPECT_EQ(listing->find("; module"), std::string::npos);
 }
 
 // --- random well-typed graphs ---------------------------------------------

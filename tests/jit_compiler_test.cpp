@@ -4,6 +4,7 @@
 // releasing kernels no one uses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <thread>
@@ -100,7 +101,8 @@ TEST(JitCompiler, KernelsShareNoDataByName) {
 }
 
 // Past the inlining budget, an op used by many nodes is compiled once and
-// called: a chain of 200 exps compiles to three functions, not one huge one.
+// called: a chain of 200 exps compiles to a few functions, not one huge
+// one (`exp` once in each module of the kernel split in two).
 TEST(JitCompiler, LargeGraphsCallTheirLargestOpsInsteadOfInliningThem) {
   std::string nodes = R"({"id": "p", "op": "P"}, {"id": "s", "op": "split", "in": {"v": "p"}},
                          {"id": "v0", "op": "mul", "in": {"a": "s.x", "b": 1}})";
@@ -111,14 +113,16 @@ TEST(JitCompiler, LargeGraphsCallTheirLargestOpsInsteadOfInliningThem) {
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   Result<std::string> ir = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
   ASSERT_TRUE(ir.ok()) << ir.error().to_string();
-  int definitions = 0, calls = 0;
+  int definitions = 0, calls = 0, modules = 0;
   std::istringstream lines(*ir);
   for (std::string line; std::getline(lines, line);) {
+    modules += line.rfind("; module ", 0) == 0;
     if (line.find("@st_exp_w8(") == std::string::npos) continue;
     definitions += line.rfind("define ", 0) == 0;
     calls += line.find("call ") != std::string::npos;
   }
-  EXPECT_EQ(definitions, 1);
+  EXPECT_EQ(modules, 2);
+  EXPECT_EQ(definitions, 2);
   EXPECT_EQ(calls, 200);
 }
 
@@ -166,6 +170,15 @@ TEST(JitCompiler, CompiledObjectsGoToTheDiskCache) {
   EXPECT_EQ(objects, 1u) << names;
   std::filesystem::remove_all(folder);
 }
+
+// Enough work for a kernel split in two (codegen/kernel_split.h).
+const std::string split_graph = testing::graph_text(
+    R"({"id": "p", "op": "P"}, {"id": "t", "op": "turbulence", "in": {"p": "p", "octaves": 6}},
+       {"id": "f", "op": "fbm", "in": {"p": "p", "octaves": 5}}, {"id": "s", "op": "add", "in": {"a": "t", "b": "f"}},
+       {"id": "k", "op": "spline", "in": {"x": "s"}, "basis": "catmull-rom",
+        "knots": [[0, 0, 0], [0, 0.1, 0.2], [0.5, 0.4, 0.3], [1, 0.9, 0.6], [1, 1, 1]]},
+       {"id": "n", "op": "noise", "in": {"p": "p"}}, {"id": "m", "op": "mul", "in": {"a": "k", "b": "n"}})",
+    R"("color": "m")");
 
 // The graph's colour is the constant `red`: a new program for each value.
 Result<LoadedGraph> constant_graph(float red) {
@@ -226,6 +239,52 @@ TEST(JitCompiler, TheDiskCacheKeepsTheMostRecentlyUsedObjects) {
   std::size_t objects = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) objects += entry.path().extension() == ".o";
   EXPECT_EQ(objects, 3u);
+  std::filesystem::remove_all(folder);
+}
+
+// Compiles more kernels than the memory cache holds, and lets them go.
+void evict_memory_cache() {
+  for (int i = 0; i <= memory_cache_kernels; ++i) {
+    Result<LoadedGraph> graph = constant_graph(1000.0f + static_cast<float>(i));
+    ASSERT_TRUE(graph.ok());
+    ASSERT_TRUE(compile_kernel(graph->ir, 4, memory_only()).ok());
+  }
+}
+
+// A split kernel is two objects, cached together: it is read back from
+// the disk only when both are there, and compiled anew otherwise.
+TEST(JitCompiler, SplitKernelsKeepBothObjectsInTheDiskCache) {
+  const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-split-cache-test";
+  std::filesystem::remove_all(folder);
+  const JitSettings settings{true, folder.string(), false, std::nullopt};
+  Result<LoadedGraph> loaded = compile_graph_text(split_graph, "split.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  auto objects = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".o") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const std::string name = kernel_identity(loaded->ir, 8, settings);
+  {
+    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 8, settings);
+    ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+    EXPECT_EQ(compiled->cache, CacheHit::none);
+  }
+  EXPECT_EQ(objects(), (std::vector<std::string>{name, name + "_first"}));
+  evict_memory_cache();
+  {
+    Result<CompiledKernel> reloaded = compile_kernel(loaded->ir, 8, settings);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error().to_string();
+    EXPECT_EQ(reloaded->cache, CacheHit::disk);
+  }
+  std::filesystem::remove(folder / (name + "_first.o"));
+  evict_memory_cache();
+  Result<CompiledKernel> recompiled = compile_kernel(loaded->ir, 8, settings);
+  ASSERT_TRUE(recompiled.ok()) << recompiled.error().to_string();
+  EXPECT_EQ(recompiled->cache, CacheHit::none) << "half a kernel is no kernel";
+  EXPECT_EQ(objects(), (std::vector<std::string>{name, name + "_first"}));
   std::filesystem::remove_all(folder);
 }
 

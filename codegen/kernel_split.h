@@ -1,0 +1,42 @@
+// Where a large kernel is split in two, so that it compiles on two threads.
+//
+// LLVM compiles a module on one thread, and a large kernel's cold compile
+// is mostly its back end (instruction selection and register allocation
+// over one long loop body). So a kernel whose ops bring more than
+// split_threshold library instructions is emitted as two modules compiled
+// side by side: the first part evaluates the varying instructions before
+// the cut over a chunk of samples and leaves the values the second part
+// reads (the crossing values) in a scratch block; the second part reads
+// them back and evaluates the rest. The run function calls both, chunk by
+// chunk (codegen/emit_kernel.h). A cut lies outside every conditional
+// region, near the middle of the kernel's weight, where the fewest values
+// cross; a kernel with no such cut is compiled whole.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "ir/shade_ir.h"
+
+namespace shadetree {
+
+struct KernelSplit {
+  int cut = 0;                // the second part's first instruction
+  std::vector<int> crossing;  // values of the first part the second reads, in scratch order
+  int crossing_vectors = 0;   // their stored components (vectors per sample)
+};
+
+// Samples per chunk: the scratch block holds crossing_vectors of them.
+constexpr int kernel_split_chunk = 128;
+// More crossing vectors than this and the scratch traffic (and the
+// block on the stack) would cost more than the parallel compile saves.
+constexpr int max_crossing_vectors = 32;
+// Library instructions (op_library_instructions) below which a kernel
+// compiles whole: marble (2256) compiles in about 28 ms, and splitting
+// costs a little speed.
+constexpr unsigned split_threshold = 1500;
+
+// Where to split `ir`'s kernel of `width`, or nothing to compile it whole.
+std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width);
+
+}  // namespace shadetree
