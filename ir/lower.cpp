@@ -4,6 +4,7 @@
 #include <map>
 
 #include "ir/differentiate.h"
+#include "nodes/ops/generators.h"
 
 namespace shadetree {
 namespace {
@@ -116,6 +117,7 @@ class Lowering {
     }
     if (op == OpId::gradient) return {{differentiator_.gradient(inputs[0].first, node.node->id), Type::vec3}};
     if (op == OpId::bump) return {{lower_bump(inputs, node.node->id), Type::vec3}};
+    if (op == OpId::vnoise) return {{lower_vnoise(node, inputs[0].first), Type::vec3}};
     IrInstr instr;
     instr.op = op;
     instr.type = node.output_types[0];
@@ -169,6 +171,23 @@ class Lowering {
     const std::int32_t tilt = op_instruction(OpId::mul, Type::vec3, Type::vec3, {tangential, inputs[2].first}, source);
     const std::int32_t bent = op_instruction(OpId::sub, Type::vec3, Type::vec3, {n, tilt}, source);
     return op_instruction(OpId::normalize, Type::vec3, Type::vec3, {bent}, source);
+  }
+
+  // vnoise (nodes/ops/generators.h): vec3(noise(p - sigma), noise(p),
+  // noise(p + sigma)), each noise of the node's seed.
+  std::int32_t lower_vnoise(const CheckedNode& node, std::int32_t p) {
+    const std::string& source = node.node->id;
+    const float* sigma = ops::vnoise::offset;
+    const std::int32_t offset = constant({sigma[0], sigma[1], sigma[2]}, Type::vec3, source);
+    const auto noise_at = [&](std::int32_t at) {
+      const std::int32_t noise = op_instruction(OpId::noise, Type::float_, Type::float_, {at}, source);
+      ir_.code[noise].immediate = {node.immediate[0], node.immediate[1]};
+      return noise;
+    };
+    const std::int32_t below = noise_at(op_instruction(OpId::sub, Type::vec3, Type::vec3, {p, offset}, source));
+    const std::int32_t at_p = noise_at(p);
+    const std::int32_t above = noise_at(op_instruction(OpId::add, Type::vec3, Type::vec3, {p, offset}, source));
+    return op_instruction(OpId::vec3, Type::float_, Type::vec3, {below, at_p, above}, source);
   }
 
   const CheckedGraph& graph_;

@@ -30,15 +30,8 @@ LoadedGraph compile(const std::string& nodes) {
 // The colour output over the sample set, per backend: the interpreter,
 // then the JIT at widths 4, 8 and 16. colour[backend][c][i].
 std::vector<std::vector<std::vector<float>>> colour_on_every_backend(const LoadedGraph& graph) {
-  std::vector<std::unique_ptr<Kernel>> kernels;
-  kernels.push_back(make_interpreted_kernel(graph.ir));
-  for (int width : {4, 8, 16}) {
-    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(graph.ir, width);
-    EXPECT_TRUE(jit.ok()) << jit.error().to_string();
-    kernels.push_back(std::move(*jit));
-  }
   std::vector<std::vector<std::vector<float>>> colours;
-  for (const auto& kernel : kernels) {
+  for (const auto& kernel : testing::kernels_on_every_backend(graph.ir)) {
     auto planes = testing::run(*kernel, graph.params);
     const int first = kernel->outputs().plane(OutputId::color);
     colours.push_back({planes[first], planes[first + 1], planes[first + 2]});

@@ -173,15 +173,6 @@ TEST(Dnoise, EqualsTheKnotGradientOnTheLattice) {
   EXPECT_FLOAT_EQ(at_origin.z, tables().gradient_z[index]);
 }
 
-TEST(Vnoise, MiddleComponentIsNoiseAndOthersAreOffsetNoise) {
-  const Vec3<float> v = vnoise(tables(), 0.3f, 0.6f, 0.9f);
-  EXPECT_EQ(v.y, noise(tables(), 0.3f, 0.6f, 0.9f));
-  EXPECT_EQ(v.x, noise(tables(), 0.3f - vector_noise_offset[0], 0.6f - vector_noise_offset[1],
-                       0.9f - vector_noise_offset[2]));
-  EXPECT_NE(v.x, v.y);
-  EXPECT_NE(v.z, v.y);
-}
-
 // Values of Perlin's 2002 reference implementation (Java, in double).
 TEST(NoiseImproved, MatchesThePublishedReference) {
   EXPECT_NEAR(noise_improved(3.14f, 42.0f, 7.0f), 0.13691995878400012, 2e-6);

@@ -49,16 +49,18 @@ struct dnoise {
   }
 };
 
+// No lane form: lowering makes vnoise three noise instructions
+// (ir/lower.cpp), so that the optimizer, the kernel split and the
+// outliner see each noise as the noise it is.
 struct vnoise {
+  // 1989 section 2.4: sigma is far enough apart (and not a multiple of the
+  // 256-cell period) that the three noises meet unrelated knots.
+  static constexpr float offset[3] = {113.5f, 271.25f, 37.75f};
   static OpDef definition() {
     return {.name = "vnoise", .family = OpFamily::generator,
             .doc = "vector noise: noise at p - sigma, p, p + sigma (1989 section 2.4)",
             .inputs = {in("p", Type::vec3)}, .outputs = {out(Type::vec3)}, .attributes = {seed_attribute()},
             .tables = OpTables::noise};
-  }
-  template <class X>
-  static void evaluate(const X& x) {
-    frame::store_vec3(x, sem::vnoise(x.tables(), x.in(0, 0), x.in(0, 1), x.in(0, 2)));
   }
 };
 

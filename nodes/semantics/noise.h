@@ -230,17 +230,6 @@ Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
   return sum;
 }
 
-// 1989 section 2.4: sigma is far enough apart (and not a multiple of the
-// 256-cell period) that the three calls meet unrelated knots.
-inline constexpr float vector_noise_offset[3] = {113.5f, 271.25f, 37.75f};
-
-template <class F>
-Vec3<F> vnoise(const NoiseTables& tables, F x, F y, F z) {
-  const float* s = vector_noise_offset;
-  return {noise(tables, x - s[0], y - s[1], z - s[2]), noise(tables, x, y, z),
-          noise(tables, x + s[0], y + s[1], z + s[2])};
-}
-
 // Perlin 2002, "Improving Noise": the fade curve 6t^5 - 15t^4 + 10t^3.
 template <class F>
 F improved_fade(F t) {

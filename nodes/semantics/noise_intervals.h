@@ -1,6 +1,6 @@
 // Interval forms of the lattice functions (noise.h, cellular.h), which
 // hash cells in bits and so cannot be instantiated over intervals. They
-// are overloads in the namespace of Interval: noise, pnoise, vnoise,
+// are overloads in the namespace of Interval: noise, pnoise,
 // turbulence, fbm and their periodic twins reach noise_on_axes, the 4D
 // noise4, pnoise4, turbulence4 and pturbulence4 reach noise4_on_axes, and
 // cellular and pcellular reach cellular_on_axes, by argument-dependent

@@ -4,11 +4,16 @@
 // coordinates; and a kernel's outputs over them.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
+#include "interp/interpreter.h"
 #include "ir/kernel.h"
+#include "jit/jit_kernel.h"
 
 namespace shadetree::testing {
 
@@ -60,6 +65,19 @@ struct SampleSet {
 inline const SampleSet& samples() {
   static const SampleSet set;
   return set;
+}
+
+// The interpreter, then the JIT at widths 4, 8 and 16; a JIT that fails
+// to compile fails the test and is left out.
+inline std::vector<std::unique_ptr<Kernel>> kernels_on_every_backend(const ShadeIR& ir) {
+  std::vector<std::unique_ptr<Kernel>> kernels;
+  kernels.push_back(make_interpreted_kernel(ir));
+  for (int width : {4, 8, 16}) {
+    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(ir, width);
+    EXPECT_TRUE(jit.ok()) << jit.error().to_string();
+    if (jit) kernels.push_back(std::move(*jit));
+  }
+  return kernels;
 }
 
 inline std::vector<std::vector<float>> run(const Kernel& kernel, const std::vector<float>& params) {
