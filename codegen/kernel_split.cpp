@@ -1,6 +1,6 @@
 #include "codegen/kernel_split.h"
 
-#include <cstdlib>
+#include <algorithm>
 
 #include "codegen/op_library.h"
 
@@ -9,10 +9,14 @@ namespace shadetree {
 namespace {
 
 // What instruction `instr` costs the kernel's compile: its op's library
-// instructions, or one for data movement.
-unsigned weight(const IrInstr& instr, int width) {
+// instructions that its constant arguments do not fold away, or one for
+// data movement.
+unsigned weight(const ShadeIR& ir, const IrInstr& instr, int width) {
   if (instr.kind != IrOpKind::op) return 1;
-  return std::max(1u, op_library_instructions(op_library_symbol(instr.op, instr.dual, width), width));
+  unsigned unknown = 0;
+  for (int a = 0; a < instr.arg_count; ++a)
+    if (ir.code[instr.args[a]].kind != IrOpKind::constant) unknown |= 1u << a;
+  return std::max(1u, op_library_instructions(op_library_symbol(instr.op, instr.dual, width), width, unknown));
 }
 
 // Whether value `instr` reaches the second part through scratch: constants
@@ -29,7 +33,7 @@ std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width) {
   const int count = static_cast<int>(ir.code.size());
   std::vector<unsigned> before(static_cast<std::size_t>(count) + 1, 0);  // weight of the varying code before i
   for (int i = 0; i < count; ++i)
-    before[i + 1] = before[i] + (ir.code[i].uniform ? 0 : weight(ir.code[i], width));
+    before[i + 1] = before[i] + (ir.code[i].uniform ? 0 : weight(ir, ir.code[i], width));
   const unsigned total = before[count];
   if (total < split_threshold) return std::nullopt;
 
@@ -44,9 +48,12 @@ std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width) {
     if (may_cross(ir.code[v]) && last_use[v] > v) ending[last_use[v] + 1] += stored_components(ir.code[v]);
 
   // A cut before instruction c: outside every region, the first part
-  // holding between a third and two thirds of the weight.
+  // holding between a quarter and three quarters of the weight. Of those, the
+  // one whose larger part, with the crossing values' stores and loads,
+  // weighs least: the two threads finish together.
   std::optional<int> best;
-  int best_vectors = max_crossing_vectors + 1;
+  unsigned best_cost = 0;
+  int best_vectors = 0;
   int live = 0, depth = 0;
   for (int c = 0; c < count; ++c) {
     live -= ending[c];
@@ -55,10 +62,11 @@ std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width) {
     const bool at_top = depth == 0 && !instr.uniform && instr.kind != IrOpKind::end_region;
     if (!instr.uniform && instr.kind == IrOpKind::begin_region) ++depth;
     if (!instr.uniform && instr.kind == IrOpKind::end_region) --depth;
-    if (!at_top || 3 * before[c] < total || 3 * before[c] > 2 * total) continue;
-    const auto off_middle = [&](int cut) { return std::abs(2 * static_cast<long>(before[cut]) - total); };
-    if (live < best_vectors || (live == best_vectors && off_middle(c) < off_middle(*best))) {
+    if (!at_top || live > max_crossing_vectors || 4 * before[c] < total || 4 * before[c] > 3 * total) continue;
+    const unsigned cost = std::max(before[c], total - before[c]) + crossing_vector_weight * static_cast<unsigned>(live);
+    if (!best || cost < best_cost) {
       best = c;
+      best_cost = cost;
       best_vectors = live;
     }
   }

@@ -9,8 +9,9 @@
 // reads (the crossing values) in a scratch block; the second part reads
 // them back and evaluates the rest. The run function calls both, chunk by
 // chunk (codegen/emit_kernel.h). A cut lies outside every conditional
-// region, near the middle of the kernel's weight, where the fewest values
-// cross; a kernel with no such cut is compiled whole.
+// region, where the larger part (its ops and the crossing values it
+// stores or loads) weighs least; a kernel with no such cut is compiled
+// whole.
 #pragma once
 
 #include <optional>
@@ -28,13 +29,17 @@ struct KernelSplit {
 
 // Samples per chunk: the scratch block holds crossing_vectors of them.
 constexpr int kernel_split_chunk = 128;
+// What one crossing vector adds to the weight of each part: its store
+// in the first, its load in the second (a few instructions each, and
+// the scratch block's traffic).
+constexpr unsigned crossing_vector_weight = 8;
 // More crossing vectors than this and the scratch traffic (and the
 // block on the stack) would cost more than the parallel compile saves.
 constexpr int max_crossing_vectors = 32;
-// Library instructions (op_library_instructions) below which a kernel
-// compiles whole: marble (2256) compiles in about 28 ms, and splitting
-// costs a little speed.
-constexpr unsigned split_threshold = 1500;
+// Library instructions (op_library_instructions, what the kernel's
+// constants leave of its ops) below which a kernel compiles whole: marble
+// (1269) compiles in 25-40 ms, and splitting costs a little speed.
+constexpr unsigned split_threshold = 1300;
 
 // Where to split `ir`'s kernel of `width`, or nothing to compile it whole.
 std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width);

@@ -1,15 +1,22 @@
 #include "codegen/op_library.h"
 
+#include <algorithm>
 #include <map>
 #include <mutex>
+#include <set>
+#include <tuple>
 #include <utility>
 
+#include <llvm/Analysis/ValueTracking.h>
 #include <llvm/Bitcode/BitcodeReader.h>
+#include <llvm/IR/IntrinsicInst.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/Support/Error.h>
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/xxhash.h>
+
+#include "nodes/limits.h"
 
 extern const unsigned char shadetree_ops_bitcode_w4[];
 extern const unsigned long shadetree_ops_bitcode_w4_size;
@@ -60,13 +67,45 @@ std::string op_library_symbol(OpId op, bool dual, int width) {
   return std::string("st_") + op_symbol(op) + (dual ? "_dual" : "") + "_w" + std::to_string(width);
 }
 
-unsigned op_library_instructions(const std::string& symbol, int width) {
+namespace {
+
+// The instructions of `function` that depend, through their operands, on
+// one of the arguments in `unknown` (the others are constants).
+unsigned instructions_depending_on(llvm::Function& function, unsigned unknown) {
+  std::set<const llvm::Value*> depending;
+  for (unsigned input = 0; input < max_op_args; ++input)
+    if (unknown & (1u << input) && input + 1 < function.arg_size()) depending.insert(function.getArg(input + 1));
+  // Loops carry values around their phis, and memory carries them from a
+  // store (or a call) to the loads of the same object, so repeat until
+  // nothing changes.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (llvm::BasicBlock& block : function)
+      for (llvm::Instruction& instruction : block) {
+        if (depending.contains(&instruction)) continue;
+        if (std::ranges::none_of(instruction.operands(), [&](const llvm::Use& use) { return depending.contains(use.get()); }))
+          continue;
+        depending.insert(&instruction);
+        grew = true;
+        if (!llvm::isa<llvm::StoreInst, llvm::CallInst, llvm::MemIntrinsic>(instruction)) continue;
+        for (const llvm::Use& use : instruction.operands())
+          if (use->getType()->isPointerTy()) depending.insert(llvm::getUnderlyingObject(use.get()));
+      }
+  }
+  return static_cast<unsigned>(std::ranges::count_if(depending, [](const llvm::Value* value) {
+    return llvm::isa<llvm::Instruction>(value);
+  }));
+}
+
+}  // namespace
+
+unsigned op_library_instructions(const std::string& symbol, int width, unsigned unknown_inputs) {
   static std::mutex mutex;
-  static std::map<std::pair<std::string, int>, unsigned> sizes;
+  static std::map<std::tuple<std::string, int, unsigned>, unsigned> sizes;
   static llvm::LLVMContext* context = new llvm::LLVMContext;  // never destroyed, like the JIT
   static auto* libraries = new std::map<int, std::unique_ptr<llvm::Module>>;
   std::lock_guard lock(mutex);
-  const auto key = std::make_pair(symbol, width);
+  const auto key = std::make_tuple(symbol, width, unknown_inputs);
   if (auto found = sizes.find(key); found != sizes.end()) return found->second;
   std::unique_ptr<llvm::Module>& library = (*libraries)[width];
   if (!library) library = load_op_library(*context, width);
@@ -76,7 +115,7 @@ unsigned op_library_instructions(const std::string& symbol, int width) {
     if (llvm::Error error = function->materialize())
       llvm::consumeError(std::move(error));
     else
-      size = function->getInstructionCount();
+      size = instructions_depending_on(*function, unknown_inputs);
   }
   return sizes[key] = size;
 }

@@ -26,10 +26,12 @@ std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context, int wi
 // st_<op>_w<W> or st_<op>_dual_w<W> (codegen/ops_bitcode.cpp).
 std::string op_library_symbol(OpId op, bool dual, int width);
 
-// The instructions of the library function `symbol` (0 if there is none),
-// read once per process: what inlining the op costs a kernel, known
-// before the kernel is emitted.
-unsigned op_library_instructions(const std::string& symbol, int width);
+// The instructions of the library function `symbol` (0 if there is none)
+// that depend on the inputs in the mask `unknown_inputs` (bit i: input i
+// is not a constant), counted once per process and mask: what inlining
+// the op costs a kernel, known before the kernel is emitted. The rest
+// work on constants only and fold away (gain's exponent from its g).
+unsigned op_library_instructions(const std::string& symbol, int width, unsigned unknown_inputs);
 
 // A hash of the libraries' bitcode: part of every kernel cache key, so
 // that a rebuilt shadetree never loads kernels made from older semantics.
