@@ -69,8 +69,8 @@ std::string op_library_symbol(OpId op, bool dual, int width) {
 
 namespace {
 
-// The instructions of `function` that depend, through their operands, on
-// one of the arguments in `unknown` (the others are constants).
+// The instructions of `function` that depend, through values or memory,
+// on one of the arguments in `unknown` (the others are constants).
 unsigned instructions_depending_on(llvm::Function& function, unsigned unknown) {
   std::set<const llvm::Value*> depending;
   for (unsigned input = 0; input < max_op_args; ++input)
