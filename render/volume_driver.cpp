@@ -600,13 +600,18 @@ class Marcher {
     run(samples, count, scratch);
 
     // The outward normal where 0 < density < 1 (the samples lit by their
-    // normal); elsewhere the normal faces the viewer.
+    // normal); elsewhere the normal faces the viewer. Only a sample that
+    // adds to the ray is lit, so only its normal is wanted, unless it may
+    // bend the ray: a hard surface's opacity (a step of its density) is 0
+    // through most of the soft shell, where probing cost stf_bumps 38% of
+    // its samples.
     std::vector<glm::vec3> normals;
     if (needs_gradients()) {
       std::vector<std::size_t> soft;
       for (std::size_t i = 0; i < count; ++i) {
         const float density = output(samples, OutputId::density, i);
-        if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f) soft.push_back(i);
+        if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f && (refracts_ || opacity(samples, i) > 0.0f))
+          soft.push_back(i);
       }
       normals.resize(count);
       for (std::size_t i = 0; i < count; ++i) normals[i] = -live[i]->frame.along;

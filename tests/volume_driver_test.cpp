@@ -459,6 +459,26 @@ TEST(VolumeDriver, AGraphsOwnNormalLightsItsSoftSamples) {
   EXPECT_GT(lit_head_on.pixels[rim], by_gradient.pixels[rim]);
 }
 
+// A hard surface (a step of a soft density) is lit only where it is
+// reached: a ray stops at its first sample of opacity 1, so at most that
+// one is probed for its normal, not the samples of the soft shell before
+// it, whose opacity is 0.
+TEST(VolumeDriver, OnlySamplesThatAddToARayAreProbedForTheirNormal) {
+  const std::string nodes = R"({"id": "p", "op": "P"},
+      {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 0.5, "softness": 0.8}},
+      {"id": "hard", "op": "step", "in": {"edge": 0.5, "x": "s"}})";
+  const LoadedGraph surface = compile_volume(nodes, R"("density": "s", "opacity": "hard")");
+  const SceneDesc desc = looking_down_z(Lighting::lit);
+  constexpr int size = 32;
+  VolumeRenderStats stats;
+  const Image image = render(*make_interpreted_kernel(surface.ir), surface, desc, unit_box(0.02f), size, {}, &stats);
+  // The rays that meet the sphere, each lit at one sample from two probes.
+  long hits = 0;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 3) hits += image.pixels[i] > 0.0f;
+  EXPECT_GT(hits, size * size / 10);
+  EXPECT_EQ(stats.gradient_samples, 2 * hits);
+}
+
 TEST(VolumeDriver, SkippingEmptySpaceChangesNoPixel) {
   const LoadedGraph sphere = compile_volume(R"({"id": "p", "op": "P"},
       {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 0.3, "softness": 0.2}},
