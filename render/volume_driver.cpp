@@ -58,6 +58,22 @@ struct MarchingRay {
   float sample_t(int k) const {
     return k < 0 ? entry - (1.0f - jitter) * step_length : segment_start(k) + jitter * segment_length(k);
   }
+  // Moves on to the last segment whose sample lies before `t` (never past
+  // the last segment), as stepping one segment at a time would, and says
+  // how many it passed. Over whole segments the sample moves
+  // monotonically, so the ray first jumps to about where it passes `t`.
+  int advance_to_last_sample_before(float t) {
+    const auto whole_and_before = [&](int k) { return exit - segment_start(k) >= step_length && sample_t(k) < t; };
+    const int first = segment;
+    const float guess = std::min((t - entry) / step_length, (exit - entry) / step_length);
+    if (guess > static_cast<float>(segment) + 2.0f && guess < 1e9f) {
+      int k = static_cast<int>(guess);
+      while (k > segment && !whole_and_before(k)) --k;
+      segment = k;
+    }
+    while (segment_start(segment + 1) < exit && sample_t(segment + 1) < t) ++segment;
+    return segment - first;
+  }
   float segment_start() const { return segment_start(segment); }
   float segment_length() const { return segment_length(segment); }
   float sample_t() const { return sample_t(segment); }
@@ -363,10 +379,7 @@ class Marcher {
     if (ray.segment < 0 || refracts_ || ray.sample_t() < ray.occupied_until) return;
     const Clearance clearance = occupancy_->next_occupied(ray.origin, ray.frame.along, ray.sample_t(), ray.exit);
     ray.occupied_until = clearance.until;
-    while (ray.segment_start(ray.segment + 1) < ray.exit && ray.sample_t(ray.segment + 1) < clearance.from) {
-      ++ray.segment;
-      ++counts.skipped_samples;
-    }
+    counts.skipped_samples += ray.advance_to_last_sample_before(clearance.from);
   }
 
   // What reaches `point` of each light, from `offset` out along its
