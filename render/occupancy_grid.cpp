@@ -57,11 +57,10 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
     grid.brick_state(brick) = 0;
     grid.set_cells(brick, 0);
   };
-  // First a survey of one brick in eight, those at even coordinates: where
-  // it finds far less empty space than is needed, the rest are not
-  // bounded (the fireball, which fills its bounds, paid 20 ms for the
-  // whole first level to learn that). Only the time taken depends on it.
-  const auto surveyed = [](const glm::ivec3& brick) { return brick.x % 2 == 0 && brick.y % 2 == 0 && brick.z % 2 == 0; };
+  // First a survey of one brick in eight: where it finds far less empty
+  // space than is needed, the rest are not bounded (the fireball, which
+  // fills its bounds, paid 20 ms for the whole first level to learn that).
+  // Only the time taken depends on it.
   Status survey = for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
     if (surveyed(brick)) classify(brick);
   });
@@ -84,10 +83,11 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
   return std::optional<OccupancyGrid>(std::move(grid));
 }
 
-Status OccupancyGrid::refine(const BoxOccupancy& occupied, int threads, const std::atomic<bool>* cancel) {
+Status OccupancyGrid::refine(const BoxOccupancy& occupied, bool surveyed_bricks, int threads,
+                             const std::atomic<bool>* cancel) {
   return for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
     std::uint8_t& state = brick_state(brick);
-    if (state == 0) return;
+    if (state == 0 || surveyed(brick) != surveyed_bricks) return;
     bool any = false;
     for (int k = 0; k < cells_per_brick_side; ++k)
       for (int j = 0; j < cells_per_brick_side; ++j)
@@ -166,6 +166,27 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
       return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction).t - margin};
   }
   return {t, t};
+}
+
+long OccupancyGrid::occupied_bricks(bool surveyed_bricks) const {
+  long count = 0;
+  for (int z = 0; z < bricks_per_side; ++z)
+    for (int y = 0; y < bricks_per_side; ++y)
+      for (int x = 0; x < bricks_per_side; ++x)
+        count += surveyed({x, y, z}) == surveyed_bricks && bricks_[(static_cast<std::size_t>(z) * bricks_per_side + y) * bricks_per_side + x] != 0;
+  return count;
+}
+
+double OccupancyGrid::surveyed_empty_fraction() const {
+  long empty = 0, cells = 0;
+  for (int z = 0; z < cells_per_side; ++z)
+    for (int y = 0; y < cells_per_side; ++y)
+      for (int x = 0; x < cells_per_side; ++x) {
+        if (!surveyed(glm::ivec3(x, y, z) / cells_per_brick_side)) continue;
+        ++cells;
+        empty += !cell_occupied({x, y, z});
+      }
+  return static_cast<double>(empty) / static_cast<double>(cells);
 }
 
 double OccupancyGrid::empty_fraction() const {

@@ -53,8 +53,19 @@ class OccupancyGrid {
                                                     const BoxOccupancy& occupied, double least_empty, int threads,
                                                     const std::atomic<bool>* cancel);
 
-  // The second level: the cells of each occupied brick bounded one by one.
-  Status refine(const BoxOccupancy& occupied, int threads, const std::atomic<bool>* cancel);
+  // The bricks at even coordinates, one in eight: the first level bounds
+  // them first, and the second level may too, to tell whether the rest is
+  // worth bounding.
+  static bool surveyed(const glm::ivec3& brick) { return brick.x % 2 == 0 && brick.y % 2 == 0 && brick.z % 2 == 0; }
+
+  // The second level: the cells of each occupied brick (of those
+  // `surveyed`, or of the others) bounded one by one.
+  Status refine(const BoxOccupancy& occupied, bool surveyed, int threads, const std::atomic<bool>* cancel);
+
+  // How many bricks of the survey, or of the others, are occupied.
+  long occupied_bricks(bool surveyed) const;
+  // The empty share of the surveyed bricks' volume.
+  double surveyed_empty_fraction() const;
 
   // Whether the point may hold something visible; everything outside the
   // bounds may.

@@ -22,6 +22,7 @@
 #include "render/pixel_hash.h"
 #include "render/transmittance_grid.h"
 #include "schedule/stage_clock.h"
+#include "schedule/thread_arena.h"
 #include "schedule/thread_bindings.h"
 
 namespace shadetree {
@@ -693,12 +694,18 @@ class Marcher {
   glm::vec3 background_;
 };
 
-// Empty space is skipped where the interval bounds find at least this
-// much of the first level's bricks empty. Measured at 512x512
-// (docs/architecture.md): skipping made every volume whose bricks were 32%
-// or more empty faster (sponge, 33%: 0.60 s against 1.40 s; furry_donut,
-// 32%, as fast), and the STF volumes, 15% empty, no faster.
-constexpr double least_empty_bricks = 0.3;
+// Empty space is bounded finely (the second level) only where the first
+// level finds at least this much of the bricks empty: where it finds next
+// to nothing (mesh_hypertexture, 0%), the cells beside the few empty
+// bricks are not worth bounding one by one.
+constexpr double least_empty_bricks = 0.05;
+
+// Empty space is skipped where the second level finds at least this much
+// of the bounds empty. Measured at 512x512 (docs/architecture.md):
+// skipping made every volume whose bricks were 32% or more empty faster
+// (sponge, 33%: 0.60 s against 1.40 s; furry_donut, 32%, as fast), and
+// the STF volumes, 15% of their bricks and 38% of their cells empty, too.
+constexpr double least_empty_cells = 0.3;
 
 // Skipping pays where the kernel spends on a sample of empty space at
 // least this share of what it spends on an occupied one. A graph that
@@ -708,10 +715,18 @@ constexpr double least_empty_bricks = 0.3;
 // skipping, 1.07 s not).
 constexpr double least_empty_sample_cost = 0.5;
 
-// Whether stepping over `grid`'s empty space is worth its walk: the kernel
-// timed on points of the bounds in empty cells and in occupied ones.
-bool skipping_pays(const OccupancyGrid& grid, const Kernel& kernel, BoundKernel& bound, float step,
-                   const glm::vec3& lo, const glm::vec3& hi) {
+// What a sample of a volume costs the kernel, in empty and occupied space
+// (nanoseconds on one thread; 0 where too few points of one kind were
+// found: then there is too little of that kind to matter, and nothing is
+// decided by it).
+struct SampleCosts {
+  double empty = 0.0, occupied = 0.0;
+};
+
+// The kernel timed on points of the bounds in `grid`'s empty cells and in
+// its occupied ones.
+SampleCosts time_samples(const OccupancyGrid& grid, const Kernel& kernel, BoundKernel& bound, float step,
+                         const glm::vec3& lo, const glm::vec3& hi) {
   constexpr std::size_t probes = 4096;
   std::vector<glm::vec3> empty, occupied;
   for (int k = 0; (empty.size() < probes || occupied.size() < probes) && k < 64 * static_cast<int>(probes); ++k) {
@@ -720,8 +735,7 @@ bool skipping_pays(const OccupancyGrid& grid, const Kernel& kernel, BoundKernel&
     std::vector<glm::vec3>& probed = grid.occupied(point) ? occupied : empty;
     if (probed.size() < probes) probed.push_back(point);
   }
-  // Fewer than a few hundred of either: too little of one kind to matter.
-  if (empty.size() < probes / 8 || occupied.size() < probes / 8) return true;
+  if (empty.size() < probes / 8 || occupied.size() < probes / 8) return {};
   const auto batch_of = [&](const std::vector<glm::vec3>& points) {
     auto batch = std::make_unique<Batch>(points.size(), kernel, step);
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -734,31 +748,49 @@ bool skipping_pays(const OccupancyGrid& grid, const Kernel& kernel, BoundKernel&
   const auto cost_per_sample = [&](Batch& batch, std::size_t count) {
     const auto start = std::chrono::steady_clock::now();
     bound.run(batch.inputs.inputs(), batch.outputs.planes(), count);
-    return static_cast<double>(nanoseconds_since(start)) / static_cast<double>(count);
+    return std::max(static_cast<double>(nanoseconds_since(start)) / static_cast<double>(count), 1e-3);
   };
   // Rounds of both, the median of their ratios: a tiered kernel may move
-  // to its JIT between two calls, which then must not be compared.
+  // to its JIT between two calls, which then must not be compared. The
+  // cheapest occupied sample is the JIT's where it has arrived.
   std::vector<double> ratios;
+  double occupied_cost = std::numeric_limits<double>::infinity();
   for (int round = 0; round < 5; ++round) {
     const double empty_cost = cost_per_sample(*empty_batch, empty.size());
-    ratios.push_back(empty_cost / std::max(cost_per_sample(*occupied_batch, occupied.size()), 1e-3));
+    const double round_cost = cost_per_sample(*occupied_batch, occupied.size());
+    ratios.push_back(empty_cost / round_cost);
+    occupied_cost = std::min(occupied_cost, round_cost);
   }
   std::nth_element(ratios.begin(), ratios.begin() + 2, ratios.end());
-  return ratios[2] >= least_empty_sample_cost;
+  return {ratios[2] * occupied_cost, occupied_cost};
 }
+
+// The average length of the chords of a box (Cauchy: 4 volume / area).
+float mean_chord(const glm::vec3& size) {
+  return 4.0f * size.x * size.y * size.z / (2.0f * (size.x * size.y + size.y * size.z + size.z * size.x));
+}
+
+// A marched sample costs the marcher about what it costs the kernel (at
+// 512x512, stf_bumps: 2.1 s of march and 1.6 s of kernel, thread time).
+constexpr double march_cost_per_kernel_cost = 1.0;
 
 // What the interval bounds found of a volume's empty space.
 struct EmptySpace {
   std::optional<OccupancyGrid> grid;  // none: no space is skipped
-  bool cheap = false;  // found, but the kernel evaluates it for next to nothing
+  EmptySpaceVerdict verdict = EmptySpaceVerdict::too_little;
+  double samples_saved = 0.0;  // by the second level, as estimated from its survey
 };
 
 // Where the volume may be visible: boxes of P (with any direction I) over
 // which the graph's interval enclosure (interp/interval_program.h) of
 // its opacity, or density where it has none, is not certainly 0. The
-// second level is bounded only where skipping pays (`bound` times it).
+// second level is bounded only where skipping pays: where the kernel
+// spends on empty space much of what it spends elsewhere, and where the
+// samples the second level would save this frame's `rays` (estimated from
+// its survey and the kernel's cost, timed here) cost more than bounding
+// the rest of it.
 Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, const std::vector<float>& params,
-                                     const VolumeDesc& volume, float frame, float step,
+                                     const VolumeDesc& volume, float frame, float step, long rays,
                                      const VolumeRenderOptions& options) {
   const IntervalProgram program(kernel.ir());
   const UniformInputs uniforms = volume_uniforms(frame, step);
@@ -792,12 +824,30 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
   if (!grid) return grid.error();
   EmptySpace found;
   if (!*grid) return found;
-  if (!skipping_pays(**grid, kernel, bound, step, lo, hi)) {
-    found.cheap = true;
+  const SampleCosts costs = time_samples(**grid, kernel, bound, step, lo, hi);
+  if (costs.empty < least_empty_sample_cost * costs.occupied) {
+    found.verdict = EmptySpaceVerdict::cheap;
     return found;
   }
-  if (Status refined = (*grid)->refine(occupied, options.threads, options.cancel); !refined) return refined.error();
+  const auto survey_start = std::chrono::steady_clock::now();
+  if (Status refined = (*grid)->refine(occupied, true, options.threads, options.cancel); !refined)
+    return refined.error();
+  const double survey_seconds = static_cast<double>(nanoseconds_since(survey_start)) * 1e-9;
+  const double empty = (*grid)->surveyed_empty_fraction();
+  if (empty < least_empty_cells) return found;
+  const long surveyed = (*grid)->occupied_bricks(true), rest = (*grid)->occupied_bricks(false);
+  const double rest_seconds = surveyed > 0 ? survey_seconds * static_cast<double>(rest) / static_cast<double>(surveyed) : 0.0;
+  found.samples_saved = static_cast<double>(rays) * mean_chord(hi - lo) / step * empty;
+  const double saved_seconds = found.samples_saved * costs.occupied * 1e-9 * (1.0 + march_cost_per_kernel_cost) /
+                               static_cast<double>(worker_count(options.threads));
+  if (!options.bound_finely_always && costs.occupied > 0.0 && saved_seconds < rest_seconds) {
+    found.verdict = EmptySpaceVerdict::not_worth_bounding;
+    return found;
+  }
+  if (Status refined = (*grid)->refine(occupied, false, options.threads, options.cancel); !refined)
+    return refined.error();
   found.grid = std::move(*grid);
+  found.verdict = EmptySpaceVerdict::skipped;
   return found;
 }
 
@@ -859,6 +909,20 @@ Result<LightGrids> fill_light_grids(const Kernel& kernel, ThreadBindings& bindin
   return grids;
 }
 
+// Why empty space was not skipped, for the render line.
+std::string why_not_skipped(EmptySpaceVerdict verdict, double samples_saved) {
+  switch (verdict) {
+    case EmptySpaceVerdict::cheap:
+      return "the graph evaluates it for next to nothing";
+    case EmptySpaceVerdict::not_worth_bounding:
+      return samples_saved > 0 ? "bounding it finely would cost more than the " +
+                                     std::to_string(std::lround(samples_saved / 1e6)) + " M samples it would save"
+                               : "bounding it finely would cost more than the samples it would save";
+    default:
+      return "too little of the bounds found empty";
+  }
+}
+
 class VolumeFrames : public FrameRenderer {
  public:
   VolumeFrames(Scene scene, std::shared_ptr<const EnvironmentBackground> environment, const VolumeDesc& volume,
@@ -874,15 +938,17 @@ class VolumeFrames : public FrameRenderer {
     VolumeRenderOptions options = options_;
     options.progress = progress;
     options.claims = claims;
-    const bool known_cheap = empty_space_cheap_.load();
-    if (known_cheap) options.skip_empty_space = false;
+    const EmptySpaceVerdict declined = declined_.load();
+    const bool known = declined != EmptySpaceVerdict::skipped;
+    if (known) options.skip_empty_space = false;
     Result<std::optional<Image>> background = environment_seen_by(
         environment_.get(), camera_, view.width, view.height, frame, {options.threads, {}, options.cancel});
     if (!background) return background.error();
     if (*background) options.background = &**background;
     VolumeRenderStats stats;
     Result<Image> image = render_volume(kernel, params, scene_, volume_, camera_, view, options, &stats);
-    if (stats.empty_space_cheap) empty_space_cheap_ = true;
+    if (stats.empty_space != EmptySpaceVerdict::skipped && stats.empty_space != EmptySpaceVerdict::not_asked)
+      declined_ = stats.empty_space;
     report.kernel_samples = stats.density_samples + stats.grid_samples;
     report.kernel_seconds = stats.kernel_seconds;
     report.figures = {{"rays", static_cast<double>(stats.rays)},
@@ -910,19 +976,13 @@ class VolumeFrames : public FrameRenderer {
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                               ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
                               stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds);
-    else if (known_cheap)
-      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length), "%s",
-                              ", no empty space skipped (the graph evaluates it for next to nothing, as an earlier "
-                              "frame found)");
+    else if (known)
+      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+                              ", no empty space skipped (%s, as an earlier frame found)", why_not_skipped(declined, 0).c_str());
     else if (options.skip_empty_space)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              stats.empty_space_cheap
-                                  ? ", no empty space skipped (the graph evaluates it for next to nothing; "
-                                    "bounded in %.3f s)"
-                                  : ", no empty space skipped (less than %.0f%% of the bounds' bricks found empty "
-                                    "in %.3f s)",
-                              stats.empty_space_cheap ? stats.occupancy_seconds : 100.0 * least_empty_bricks,
-                              stats.occupancy_seconds);
+                              ", no empty space skipped (%s; bounded in %.3f s)",
+                              why_not_skipped(stats.empty_space, stats.samples_saved).c_str(), stats.occupancy_seconds);
     if (stats.grid_bytes > 0)
       std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                     ", shadow grids of %.1f MB: %ld samples in %.3f s, %ld lookups", stats.grid_bytes / 1e6,
@@ -945,11 +1005,11 @@ class VolumeFrames : public FrameRenderer {
   VolumeDesc volume_;
   VolumeView view_;
   VolumeRenderOptions options_;
-  // Whether a frame found the empty space evaluated for next to nothing
-  // (skipping_pays): the later frames of the sequence then do not bound
-  // it and time the kernel again, 16-22 ms of a fireball frame at 128x128.
-  // Skipping never changes a pixel, only where the time goes.
-  mutable std::atomic<bool> empty_space_cheap_{false};
+  // Why a frame did not skip empty space (bound_empty_space), if one did
+  // not: the later frames of the sequence then do not bound it and time
+  // the kernel again, 16-22 ms of a fireball frame at 128x128. Skipping
+  // never changes a pixel, only where the time goes.
+  mutable std::atomic<EmptySpaceVerdict> declined_{EmptySpaceVerdict::skipped};
 };
 
 }  // namespace
@@ -1001,15 +1061,16 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   std::optional<OccupancyGrid> occupancy;
-  bool empty_space_cheap = false;
-  double occupancy_seconds = 0.0;
+  EmptySpaceVerdict empty_space_verdict = EmptySpaceVerdict::not_asked;
+  double samples_saved = 0.0, occupancy_seconds = 0.0;
   if (options.skip_empty_space) {
     const auto occupancy_start = std::chrono::steady_clock::now();
-    Result<EmptySpace> bounded =
-        bound_empty_space(kernel, bindings.local(), params, volume, view.frame, step, options);
+    Result<EmptySpace> bounded = bound_empty_space(kernel, bindings.local(), params, volume, view.frame, step,
+                                                   static_cast<long>(view.width) * view.height, options);
     if (!bounded) return bounded.error();
     occupancy = std::move(bounded->grid);
-    empty_space_cheap = bounded->cheap;
+    empty_space_verdict = bounded->verdict;
+    samples_saved = bounded->samples_saved;
     occupancy_seconds = since(occupancy_start);
   }
   const OccupancyGrid* empty_space = occupancy ? &*occupancy : nullptr;
@@ -1074,7 +1135,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         stats->skipped_samples += grid->skipped_samples();
       }
     stats->empty_fraction = occupancy ? occupancy->empty_fraction() : 0.0;
-    stats->empty_space_cheap = empty_space_cheap;
+    stats->empty_space = empty_space_verdict;
+    stats->samples_saved = samples_saved;
     stats->occupancy_seconds = occupancy_seconds;
     stats->grid_seconds = grid_seconds;
     stats->kernel_calls = kernel_calls;

@@ -44,6 +44,9 @@ struct VolumeRenderOptions {
   float termination = default_termination;
   ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
   bool skip_empty_space = true;  // where the graph's interval bounds say so (render/occupancy_grid.h)
+  // Bound empty space finely even where that is estimated to cost more
+  // than the samples it saves (a small image): the same pixels either way.
+  bool bound_finely_always = false;
   float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
@@ -57,6 +60,15 @@ struct VolumeRenderOptions {
   const std::atomic<bool>* cancel = nullptr;  // see for_each_tile
   TileClaims* claims = nullptr;  // this process's tiles of the frame (for_each_tile); null: all
   TileSink tile_done;  // may be empty
+};
+
+// Whether empty space was skipped, and if not, why not.
+enum class EmptySpaceVerdict {
+  not_asked,           // skip_empty_space was off
+  skipped,
+  too_little,          // the bounds found too little of it empty
+  cheap,               // found, but the graph evaluates it for next to nothing
+  not_worth_bounding,  // bounding it finely would cost more than the samples it saves
 };
 
 // Where the time went (seconds of one core, summed over threads) and how
@@ -75,7 +87,8 @@ struct VolumeRenderStats {
   double grid_seconds = 0;    // wall time of filling the grids, before the march
   long skipped_samples = 0;   // of primary, shadow and grid rays, in empty space
   double empty_fraction = 0;  // of the bounds, by the interval bounds
-  bool empty_space_cheap = false;  // found, but evaluated for next to nothing: not skipped
+  EmptySpaceVerdict empty_space = EmptySpaceVerdict::not_asked;
+  double samples_saved = 0;   // by bounding empty space finely, as estimated before (not_worth_bounding)
   double occupancy_seconds = 0;  // wall time of bounding the graph over the bounds' bricks
   long kernel_calls = 0;
   long lane_slots = 0;  // samples the calls' vector lanes could have held (with lane_width)

@@ -11,6 +11,11 @@
 
 namespace shadetree {
 
+// How many worker threads --threads gives.
+inline int worker_count(int threads) {
+  return threads > 0 ? std::min(threads, tbb::info::default_concurrency()) : tbb::info::default_concurrency();
+}
+
 inline int arena_concurrency(int threads) {
   return threads > 0 ? std::min(threads, tbb::info::default_concurrency()) : tbb::task_arena::automatic;
 }

@@ -25,7 +25,8 @@ OccupancyGrid sphere_grid(bool refined = true) {
   Result<std::optional<OccupancyGrid>> grid =
       OccupancyGrid::build(glm::vec3(-1.0f), glm::vec3(1.0f), meets_sphere, 0.0, 2, nullptr);
   EXPECT_TRUE(grid.ok() && grid->has_value());
-  if (refined) EXPECT_TRUE((*grid)->refine(meets_sphere, 2, nullptr).ok());
+  if (refined)
+    for (bool surveyed : {true, false}) EXPECT_TRUE((*grid)->refine(meets_sphere, surveyed, 2, nullptr).ok());
   return std::move(**grid);
 }
 
@@ -54,6 +55,31 @@ TEST(OccupancyGrid, TheFirstLevelHoldsTheSphereInWholeBricks) {
     const glm::vec3 point(unit(random), unit(random), unit(random));
     if (refined.occupied(point)) ASSERT_TRUE(first.occupied(point)) << point.x << ", " << point.y << ", " << point.z;
   }
+}
+
+// The survey's bricks, one in eight, refined alone: their cells' empty
+// share stands for the whole grid's (the sphere is as symmetric about
+// the surveyed bricks as about the others), and the other bricks keep
+// their first level until they are refined in turn.
+TEST(OccupancyGrid, TheSurveyedBricksTellTheSecondLevelsEmptyShare) {
+  Result<std::optional<OccupancyGrid>> built =
+      OccupancyGrid::build(glm::vec3(-1.0f), glm::vec3(1.0f), meets_sphere, 0.0, 2, nullptr);
+  ASSERT_TRUE(built.ok() && built->has_value());
+  OccupancyGrid& grid = **built;
+  const long surveyed = grid.occupied_bricks(true), others = grid.occupied_bricks(false);
+  // The sphere's 8 x 8 x 8 bricks about the centre, less the corners it misses.
+  EXPECT_GT(surveyed + others, 400);
+  EXPECT_LT(surveyed + others, 512);
+  EXPECT_NEAR(static_cast<double>(surveyed) / static_cast<double>(surveyed + others), 1.0 / 8.0, 0.02);
+  ASSERT_TRUE(grid.refine(meets_sphere, true, 2, nullptr).ok());
+  const OccupancyGrid refined = sphere_grid();
+  EXPECT_NEAR(grid.surveyed_empty_fraction(), refined.empty_fraction(), 0.01);
+  // Points outside the sphere in bricks its surface crosses: in the
+  // brick at (12, 8, 8), a surveyed one, and at (11, 9, 9), which is not.
+  const glm::vec3 in_surveyed(0.6f, 0.01f, 0.01f), in_other(0.49f, 0.24f, 0.24f);
+  EXPECT_FALSE(grid.occupied(in_surveyed));
+  EXPECT_TRUE(grid.occupied(in_other));
+  EXPECT_FALSE(refined.occupied(in_other));
 }
 
 // A ray through the cube stops before the sphere, and never past a point

@@ -489,6 +489,7 @@ TEST(VolumeDriver, SkippingEmptySpaceChangesNoPixel) {
   for (ShadowMode mode : {ShadowMode::exact, ShadowMode::cached}) {
     VolumeRenderOptions skipping, marching;
     skipping.shadows = marching.shadows = mode;
+    skipping.bound_finely_always = true;
     marching.skip_empty_space = false;
     VolumeRenderStats stats;
     auto kernel = make_interpreted_kernel(sphere.ir);
@@ -506,6 +507,7 @@ TEST(VolumeDriver, SkippingEmptySpaceChangesNoPixel) {
     VolumeDesc volume = *loaded->graph->render.volume;
     volume.step = std::max(march_step(volume), 0.02f);
     VolumeRenderOptions skipping, marching;
+    skipping.bound_finely_always = true;
     marching.skip_empty_space = false;
     VolumeRenderStats stats;
     EXPECT_EQ(render(**compiled, *loaded, scene, volume, 48, skipping, &stats).pixels,
