@@ -78,11 +78,12 @@ inline Interval operator+(Interval a, Interval b) { return enclosure(a.lo + b.lo
 inline Interval operator-(Interval a, Interval b) { return enclosure(a.lo - b.hi, a.hi - b.lo); }
 inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
 
-inline Interval operator*(Interval a, Interval b) {
-  const float p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  for (float v : p)
-    if (v != v) return everything();
-  return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+// Inlined everywhere: the interval forms of noise multiply six times per
+// knot, and called, this was an eighth of bounding a volume's empty space.
+[[gnu::always_inline]] inline Interval operator*(Interval a, Interval b) {
+  const float p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;
+  if (p0 != p0 || p1 != p1 || p2 != p2 || p3 != p3) return everything();
+  return {std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3))};
 }
 
 inline Interval operator/(Interval a, Interval b) {
