@@ -39,7 +39,7 @@ float segment_depth(float opacity, float length, float reference_step) {
 // optical depth at depth first + k spacing; segment k runs from value k to
 // value k + 1, where it crosses the bounds, and is sampled at its middle.
 struct LightRay {
-  float* values = nullptr;
+  std::size_t row = 0;  // its place in the grid's rows
   int count = 0;  // of values
   glm::vec3 start{0.0f}, direction{0.0f};
   float first = 0.0f, spacing = 0.0f;
@@ -48,6 +48,8 @@ struct LightRay {
   float optical_depth = 0.0f;
   bool done = false;
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
+  int first_gained = -1;       // the first value above 0 (-1: none yet)
+  std::vector<float> gained;  // the values from first_gained on
 
   float begin() const { return std::max(first + static_cast<float>(k) * spacing, near); }
   float end() const { return std::min(first + static_cast<float>(k + 1) * spacing, far); }
@@ -62,7 +64,25 @@ struct LightRay {
     if (optical_depth >= spent - 1.0f) optical_depth = spent;
     ++k;
     done = k + 1 >= count || reached >= far || optical_depth == spent;
-    std::fill(values + k, done ? values + count : values + k + 1, optical_depth);
+    if (first_gained < 0) {
+      if (optical_depth == 0.0f) return;
+      first_gained = k;
+    }
+    gained.push_back(optical_depth);
+  }
+
+  // Its values from the first above 0 to the last that differs from the
+  // one before, appended to `store` at `offset` (the row's pointer is set
+  // once the store stops growing).
+  TransmittanceGrid::Row stored_in(std::vector<float>& store, std::size_t& offset) {
+    while (gained.size() >= 2 && gained[gained.size() - 1] == gained[gained.size() - 2]) gained.pop_back();
+    TransmittanceGrid::Row row;
+    row.begin = std::max(first_gained, 0);
+    row.end = row.begin + static_cast<int>(gained.size());
+    row.last = gained.empty() ? 0.0f : gained.back();
+    offset = store.size();
+    store.insert(store.end(), gained.begin(), gained.end());
+    return row;
   }
 };
 
@@ -88,6 +108,9 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
 
   std::atomic<long> samples{0}, skipped{0};
   const int depth_count = grid.counts_[2];
+  const int tiles_across = (grid.counts_[0] + rays_per_side - 1) / rays_per_side;
+  grid.rows_.assign(static_cast<std::size_t>(grid.counts_[0]) * grid.counts_[1], Row{});
+  grid.gained_.resize(static_cast<std::size_t>(tiles_across) * ((grid.counts_[1] + rays_per_side - 1) / rays_per_side));
   Status marched = for_each_tile(
       grid.counts_[0], grid.counts_[1], rays_per_side, spec.threads,
       [&](const Tile& tile) -> long {
@@ -103,7 +126,7 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
             if (!span || span->far <= span->near) continue;
             ray.near = span->near;
             ray.far = span->far;
-            ray.values = grid.values_.data() + (static_cast<std::size_t>(j) * grid.counts_[0] + i) * depth_count;
+            ray.row = static_cast<std::size_t>(j) * grid.counts_[0] + i;
             ray.count = depth_count;
             ray.first = grid.first_.z;
             ray.spacing = grid.spacing_.z;
@@ -139,6 +162,11 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
           live.erase(std::remove_if(live.begin(), live.end(), [](const LightRay* ray) { return ray->done; }),
                      live.end());
         }
+        std::vector<float>& store = grid.gained_[static_cast<std::size_t>(tile.y0 / rays_per_side) * tiles_across +
+                                                 tile.x0 / rays_per_side];
+        std::vector<std::size_t> offsets(rays.size());
+        for (std::size_t r = 0; r < rays.size(); ++r) grid.rows_[rays[r].row] = rays[r].stored_in(store, offsets[r]);
+        for (std::size_t r = 0; r < rays.size(); ++r) grid.rows_[rays[r].row].gained = store.data() + offsets[r];
         skipped += tile_skipped;
         samples += tile_samples;
         return tile_samples;
@@ -199,7 +227,6 @@ bool TransmittanceGrid::lay_out(const Light& light, const glm::vec3& lo, const g
   }
   first_ = low;
   world_spacing_ = spec.spacing * spacing_.x / lateral;
-  values_.assign(static_cast<std::size_t>(counts_[0]) * counts_[1] * counts_[2], 0.0f);
   // Where the light is spent (transmittance below the termination), the
   // depth stops a little past it: finite, so that a lookup between a spent
   // ray and a lit one fades over the rays' spacing as the light does.
@@ -223,6 +250,12 @@ glm::vec3 TransmittanceGrid::ray_start(float u, float v) const {
   return perspective_ ? origin_ : origin_ + u * axis_u_ + v * axis_v_;
 }
 
+std::size_t TransmittanceGrid::bytes() const {
+  std::size_t floats = 0;
+  for (const std::vector<float>& store : gained_) floats += store.size();
+  return rows_.size() * sizeof(Row) + floats * sizeof(float);
+}
+
 std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   if (perspective_ && !(glm::dot(x - origin_, axis_w_) > 0.0f)) return 1.0f;  // behind the light
   const glm::vec3 c = light_space(x);
@@ -240,7 +273,8 @@ std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   }
   float least = std::numeric_limits<float>::infinity(), most = 0.0f;
   const auto along = [&](int i, int j) {
-    const float near = value(i, j, cell[2]), far = value(i, j, cell[2] + 1);
+    const Row& light_ray = row(i, j);
+    const float near = light_ray.at(cell[2]), far = light_ray.at(cell[2] + 1);
     least = std::min(least, near);
     most = std::max(most, far);
     return near + weight[2] * (far - near);

@@ -59,6 +59,26 @@ inline constexpr float max_spread = 0.25f;
 
 class TransmittanceGrid {
  public:
+  // A light ray's optical depths, of which only those it gained are
+  // stored: the depth is 0 until it meets the volume and stays where it
+  // ended once it leaves the volume or is spent. Through a hard surface's
+  // volume most of a dense grid held those (stf_bumps: 83 MB), and
+  // writing them took most of the build.
+  struct Row {
+    const float* gained = nullptr;  // values begin .. end - 1
+    int begin = 0, end = 0;
+    float last = 0.0f;  // of every value from end on
+
+    float at(int k) const { return k < begin ? 0.0f : k < end ? gained[k - begin] : last; }
+  };
+
+  // Moved, never copied: the rows point into the grid's own store.
+  TransmittanceGrid() = default;
+  TransmittanceGrid(TransmittanceGrid&&) noexcept = default;
+  TransmittanceGrid& operator=(TransmittanceGrid&&) noexcept = default;
+  TransmittanceGrid(const TransmittanceGrid&) = delete;
+  TransmittanceGrid& operator=(const TransmittanceGrid&) = delete;
+
   // The grid of `light` over the bounds [lo, hi]; none for a point light
   // inside or among the bounds, whose rays cannot be cut into one grid
   // (those are marched exactly).
@@ -73,7 +93,7 @@ class TransmittanceGrid {
 
   // Between neighbouring light rays, in world units at the bounds' centre.
   float spacing() const { return world_spacing_; }
-  std::size_t bytes() const { return values_.size() * sizeof(float); }
+  std::size_t bytes() const;
   long samples() const { return samples_; }  // opacities the build sampled
   long skipped_samples() const { return skipped_samples_; }  // in empty space
 
@@ -87,9 +107,7 @@ class TransmittanceGrid {
   glm::vec3 light_space(const glm::vec3& x) const;
   glm::vec3 ray_direction(float u, float v) const;
   glm::vec3 ray_start(float u, float v) const;
-  float value(int i, int j, int k) const {
-    return values_[(static_cast<std::size_t>(j) * counts_[0] + i) * counts_[2] + k];
-  }
+  const Row& row(int i, int j) const { return rows_[static_cast<std::size_t>(j) * counts_[0] + i]; }
 
   bool perspective_ = false;
   glm::vec3 origin_{0.0f};  // the light's position, or a point behind the bounds as seen from it
@@ -98,7 +116,8 @@ class TransmittanceGrid {
   glm::vec3 spacing_{1.0f};  // between values, in (u, v, w)
   float world_spacing_ = 0.0f;
   int counts_[3] = {0, 0, 0};
-  std::vector<float> values_;  // optical depth; w fastest, then u, then v
+  std::vector<Row> rows_;  // u fastest, then v
+  std::vector<std::vector<float>> gained_;  // the rows' gained depths, per tile of the build
   float spent_depth_ = 0.0f;   // where a ray's march stopped: its light is spent
   float termination_ = 0.0f;
   long samples_ = 0, skipped_samples_ = 0;

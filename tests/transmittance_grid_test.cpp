@@ -110,6 +110,31 @@ TEST(TransmittanceGrid, AHardShadowsEdgeIsLeftToShadowRays) {
   EXPECT_GT(unanswered, 0);
 }
 
+// Only the depths a light ray gains are kept: under the sun an opaque
+// slab spends every ray that meets it at its first sample, and the others
+// gain nothing, so each of the 21 x 21 rays (2 units at 0.1) keeps at most
+// one value, where a dense grid held 41 (2 units at 0.05, and the last).
+TEST(TransmittanceGrid, AHardSurfaceKeepsOneDepthPerLightRay) {
+  Light sun;
+  sun.direction = {0.0f, -1.0f, 0.0f};
+  const auto slab = [](const std::vector<glm::vec3>& points, const std::vector<glm::vec3>&,
+                       std::vector<float>& opacities) {
+    for (std::size_t i = 0; i < points.size(); ++i) opacities[i] = points[i].x < 0.0f ? 1.0f : 0.0f;
+  };
+  TransmittanceGridSpec settings = spec(0.1f);
+  settings.termination = 1.0f / 512.0f;
+  Result<std::optional<TransmittanceGrid>> grid =
+      TransmittanceGrid::build(sun, glm::vec3(-1.0f), glm::vec3(1.0f), settings, slab);
+  ASSERT_TRUE(grid.ok() && grid->has_value());
+  constexpr std::size_t rays = 21 * 21;
+  EXPECT_LE((*grid)->bytes(), rays * (sizeof(TransmittanceGrid::Row) + sizeof(float)));
+  EXPECT_GT((*grid)->bytes(), rays * sizeof(TransmittanceGrid::Row));
+  for (float y : {0.9f, 0.0f, -0.9f}) {
+    EXPECT_EQ((*grid)->at(glm::vec3(-0.5f, y, 0.3f)), 0.0f) << y;
+    EXPECT_EQ((*grid)->at(glm::vec3(0.5f, y, 0.3f)), 1.0f) << y;
+  }
+}
+
 TEST(TransmittanceGrid, ItsSizeIsBounded) {
   Light sun;
   TransmittanceGridSpec settings = spec(1e-4f);
