@@ -92,6 +92,53 @@ TEST(ShapeIntervals, Table2dEnclosesItsBilinearLookup) {
   }
 }
 
+// A distance grid of 5 x 4 x 3 voxels of 0.5 from (-1, -1, -1) (the layout
+// of nodes/semantics/soft_objects.h), its distances random, and boxes of
+// p from a point to wider than the grid, inside, across and beyond it.
+TEST(ShapeIntervals, GridDistanceEnclosesItsTrilinearLookupAndTheDistanceBeyond) {
+  std::mt19937 random = random_source(11);
+  const int size[3] = {5, 4, 3};
+  std::vector<float> grid = {-1.0f, -1.0f, -1.0f, 0.5f, float(size[0]), float(size[1]), float(size[2])};
+  for (int v = 0; v < size[0] * size[1] * size[2]; ++v) grid.push_back(uniform(random, -1.0f, 2.0f));
+  for (int trial = 0; trial < 2000; ++trial) {
+    Interval box[3];
+    for (Interval& axis : box) {
+      const float a = uniform(random, -3.0f, 3.0f), width = uniform(random, 0.0f, 3.0f) * uniform(random, 0.0f, 1.0f);
+      axis = {a, a + width};
+    }
+    const Interval range = lanes::grid_distance_range(grid.data(), box[0], box[1], box[2]);
+    for (int k = 0; k < 40; ++k) {
+      semantics::Vec3<float> p;
+      float* at[3] = {&p.x, &p.y, &p.z};
+      for (int axis = 0; axis < 3; ++axis)
+        *at[axis] = k < 2 ? (k == 0 ? box[axis].lo : box[axis].hi)
+                          : std::min(box[axis].hi, box[axis].lo + (box[axis].hi - box[axis].lo) * uniform(random, 0, 1));
+      const float value = semantics::grid_distance(grid.data(), p);
+      ASSERT_TRUE(lanes::encloses(range, value)) << "at " << p.x << ", " << p.y << ", " << p.z << ": " << value
+                                                 << " outside [" << range.lo << ", " << range.hi << "]";
+    }
+  }
+  // Within one voxel cell, between its eight values; beyond the last
+  // voxel centre (1.25, 0.75, 0.25) by (3, 4, 12), 13 further than the
+  // last cell's values.
+  const auto cell_hull = [&](int i0, int j0, int k0) {
+    float least = grid[7 + (k0 * size[1] + j0) * size[0] + i0], most = least;
+    for (int k = k0; k < k0 + 2; ++k)
+      for (int j = j0; j < j0 + 2; ++j)
+        for (int i = i0; i < i0 + 2; ++i) {
+          least = std::min(least, grid[7 + (k * size[1] + j) * size[0] + i]);
+          most = std::max(most, grid[7 + (k * size[1] + j) * size[0] + i]);
+        }
+    return Interval{least, most};
+  };
+  const Interval cell = lanes::grid_distance_range(grid.data(), {-0.7f, -0.6f}, {-0.7f, -0.6f}, {-0.7f, -0.6f});
+  EXPECT_NEAR(cell.lo, cell_hull(0, 0, 0).lo, 1e-3f);
+  EXPECT_NEAR(cell.hi, cell_hull(0, 0, 0).hi, 1e-3f);
+  const Interval far = lanes::grid_distance_range(grid.data(), 4.25f, 4.75f, 12.25f);
+  EXPECT_NEAR(far.lo, cell_hull(3, 2, 1).lo + 13.0f, 1e-3f);
+  EXPECT_NEAR(far.hi, cell_hull(3, 2, 1).hi + 13.0f, 1e-3f);
+}
+
 // A component of d / |d| in float: 1 up to rounding, but where |d|^2 is
 // subnormal, rounded to a multiple of 2^-149, up to sqrt(1.5) (a squared
 // length of 1.49 2^-149 read as 2^-149). The bound covers both.

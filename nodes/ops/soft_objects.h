@@ -138,6 +138,9 @@ struct mesh_distance {
   static void evaluate(const X& x) {
     x.out() = sem::grid_distance(x.data(), frame::vec3(x, 0));
   }
+  static void evaluate_interval(const IntervalFrame& x) {
+    x.out() = lanes::grid_distance_range(x.data(), x.in(0, 0), x.in(0, 1), x.in(0, 2));
+  }
 };
 
 struct mesh_closest {
@@ -151,6 +154,16 @@ struct mesh_closest {
   template <class X>
   static void evaluate(const X& x) {
     frame::store_vec3(x, sem::grid_closest(x.data(), frame::vec3(x, 0)));
+  }
+  // p - d n with |n| at most 1 (sqrt 1.5 where |grad d|^2 is subnormal):
+  // within |d| of p, however loose the generic form is.
+  static void evaluate_interval(const IntervalFrame& x) {
+    evaluate(x);
+    if (!x.finite_inputs(1)) return;
+    const lanes::Interval d = lanes::grid_distance_range(x.data(), x.in(0, 0), x.in(0, 1), x.in(0, 2));
+    if (!lanes::is_finite(d)) return;
+    const float reach = 1.25f * std::max(std::fabs(d.lo), std::fabs(d.hi));
+    for (int c = 0; c < 3; ++c) x.out(c) = lanes::within_reach(x.out(c), x.in(0, c), reach);
   }
 };
 

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "nodes/lane_interval.h"
+#include "nodes/semantics/soft_objects.h"
 #include "nodes/semantics/splines.h"
 
 namespace shadetree::lanes {
@@ -78,6 +79,49 @@ inline Interval table2d_range(const float* values, int rows, int columns, Interv
   for (int row = row_first; row <= row_last; ++row)
     result = hull(result, hull_of(values + row * columns, 1, column_first, column_last));
   return widened_by_rounding(result);
+}
+
+// Boxes over more voxels than this are bounded by nothing (the occupancy
+// grid's bricks reach some hundreds of a 64^3 grid).
+inline constexpr long max_enclosed_voxels = 1 << 15;
+
+// semantics::grid_distance over a box of p: a trilinear blend lies
+// between the voxel values it blends, so between those of every cell the
+// box reaches, and the distance beyond the grid it adds grows with how
+// far the box reaches past it. The generic form knew neither: its gather
+// spans whole slices of the grid, and mesh_hypertexture found none of its
+// bounds empty.
+inline Interval grid_distance_range(const float* grid, Interval x, Interval y, Interval z) {
+  if (!is_finite(x) || !is_finite(y) || !is_finite(z)) return everything();
+  const float voxel = grid[3];
+  const int size[3] = {int(grid[4]), int(grid[5]), int(grid[6])};
+  const Interval p[3] = {x, y, z};
+  int first[3], last[3];
+  long voxels = 1;
+  Interval outside = 0.0f;
+  for (int axis = 0; axis < 3; ++axis) {
+    // As the lane form computes them, endpoint by endpoint: each step is
+    // monotone in p.
+    const float lo = grid[axis] + 0.5f * voxel, hi = grid[axis] + (float(size[axis]) - 0.5f) * voxel;
+    const auto clamped = [&](float at) { return std::min(std::max(at, lo), hi); };
+    const Interval beyond{p[axis].lo - clamped(p[axis].lo), p[axis].hi - clamped(p[axis].hi)};
+    outside = outside + square(beyond);
+    const auto cell = [&](float at) {
+      const float position = (clamped(at) - lo) * (1.0f / voxel);
+      return static_cast<int>(std::min(std::floor(position), float(size[axis] > 1 ? size[axis] - 2 : 0)));
+    };
+    first[axis] = cell(p[axis].lo);
+    last[axis] = size[axis] > 1 ? cell(p[axis].hi) + 1 : first[axis];
+    voxels *= last[axis] - first[axis] + 1;
+  }
+  if (voxels > max_enclosed_voxels) return everything();
+  const float* distance = grid + semantics::distance_grid_header;
+  Interval blended{distance[(static_cast<std::size_t>(first[2]) * size[1] + first[1]) * size[0] + first[0]]};
+  for (int k = first[2]; k <= last[2]; ++k)
+    for (int j = first[1]; j <= last[1]; ++j)
+      blended = hull(blended, hull_of(distance + (static_cast<std::size_t>(k) * size[1] + j) * size[0], 1, first[0],
+                                      last[0]));
+  return widened_by_rounding(blended) + sqrt(outside);
 }
 
 // How far from 0 a component of d / |d| computed in float can lie: 1 up
