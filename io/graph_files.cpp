@@ -7,10 +7,12 @@
 #include <utility>
 
 #include "nodes/limits.h"
+#include "io/distance_grid_cache.h"
 #include "io/image_output.h"
 #include "io/mesh_file.h"
 #include "io/resource_path.h"
 #include "io/vdb_file.h"
+#include "platform/user_cache.h"
 
 namespace shadetree {
 namespace {
@@ -64,10 +66,17 @@ GraphFiles graph_files(std::vector<std::string> search_paths) {
     Result<std::string> resolved = resolve_graph_resource(graph_file, path, search_paths, "mesh");
     if (!resolved) return resolved.error();
     return read->grids.get(std::pair{*resolved, resolution}, *resolved, [&]() -> Result<DistanceGrid> {
+      std::error_code unresolved;
+      const DistanceGridSource source{std::filesystem::absolute(*resolved, unresolved), resolution};
+      const std::filesystem::path folder = user_cache_folder("");
+      if (std::optional<DistanceGrid> cached = read_cached_distance_grid(folder, source)) return std::move(*cached);
       Result<TriangleMesh> mesh = load_mesh(*resolved);
       if (!mesh) return mesh.error();
       Result<DistanceGrid> grid = mesh_distance_grid(*mesh, resolution);
-      if (grid) return grid;
+      if (grid) {
+        store_distance_grid(folder, source, *grid);
+        return grid;
+      }
       Diagnostic error = grid.error();
       error.file = *resolved;
       return error;

@@ -29,6 +29,7 @@
 #include "codegen/op_library.h"
 #include "jit/host_target.h"
 #include "jit/kernel_object_cache.h"
+#include "platform/user_cache.h"
 #include "jit/optimization_pipeline.h"
 #include "nodes/noise_tables.h"
 
@@ -160,7 +161,7 @@ class Jit {
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
     }
-    const std::filesystem::path folder = settings.disk_cache ? kernel_cache_folder(settings.cache_folder) : std::filesystem::path();
+    const std::filesystem::path folder = settings.disk_cache ? user_cache_folder(settings.cache_folder) : std::filesystem::path();
     std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
     {
       std::lock_guard lock(mutex_);
