@@ -3,8 +3,8 @@
 // of some thousands of triangles into a 64^3 grid whose narrow band spans
 // all of it, and every render of a mesh graph paid it (mesh_hypertexture:
 // 1.5 s of each process). A grid is found again by the mesh file's path,
-// size and modification time and the grid's resolution, all written in
-// the cached file and checked when it is read.
+// size and bytes (a hash of them) and the grid's resolution, all written
+// in the cached file and checked when it is read.
 #pragma once
 
 #include <filesystem>
