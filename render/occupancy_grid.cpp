@@ -136,13 +136,25 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   glm::vec3 point = origin + t * direction;
   if (!inside(point)) return {t, t};  // outside the bounds nothing is known
   glm::ivec3 cell = cell_of(point);
-  if (cell_occupied(cell)) return {t, exit_of(cell, 1, origin, direction).t - margin};
   // A 3D DDA from cell to cell (Amanatides & Woo 1987), over whole bricks
   // where a brick is empty. The next cell is the current one's (or
   // brick's) neighbour across the face the ray leaves by, stepped as an
   // index: a position a hair past the face could round back into the box
   // when the ray grazes it.
   const glm::ivec3 step(direction.x > 0.0f ? 1 : -1, direction.y > 0.0f ? 1 : -1, direction.z > 0.0f ? 1 : -1);
+  if (cell_occupied(cell)) {
+    // The run of occupied cells the ray is in: it need not ask again
+    // before it leaves the run (a hard surface's shell is some cells thick).
+    Exit leaves = exit_of(cell, 1, origin, direction);
+    for (int run = 1; run < max_occupied_run && leaves.t < end; ++run) {
+      glm::ivec3 next = cell;
+      next[leaves.axis] += step[leaves.axis];
+      if (next[leaves.axis] < 0 || next[leaves.axis] >= cells_per_side || !cell_occupied(next)) break;
+      cell = next;
+      leaves = exit_of(cell, 1, origin, direction);
+    }
+    return {t, leaves.t - margin};
+  }
   // A ray crosses at most 3 cells_per_side cells; the bound is a guard
   // (the ray then samples).
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {

@@ -44,6 +44,8 @@ class OccupancyGrid {
   static constexpr int bricks_per_side = 16;     // the first level
   static constexpr int cells_per_brick_side = 4;  // the second, where the first cannot tell
   static constexpr int cells_per_side = bricks_per_side * cells_per_brick_side;
+  // Occupied cells walked ahead at most when a ray asks from inside one.
+  static constexpr int max_occupied_run = 16;
 
   // The first level, every cell of an occupied brick occupied; none when
   // it finds less than `least_empty` of the bounds empty: stepping through
