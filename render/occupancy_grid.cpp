@@ -27,10 +27,6 @@ Status for_each_brick(int threads, const std::atomic<bool>* cancel, const std::f
 
 }  // namespace
 
-std::uint8_t& OccupancyGrid::brick_state(const glm::ivec3& brick) {
-  return bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x];
-}
-
 void OccupancyGrid::set_cells(const glm::ivec3& brick, std::uint8_t state) {
   for (int k = 0; k < cells_per_brick_side; ++k)
     for (int j = 0; j < cells_per_brick_side; ++j)
@@ -159,8 +155,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // (the ray then samples).
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
     const glm::ivec3 brick = cell / cells_per_brick_side;
-    const bool brick_empty =
-        bricks_[(static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x] == 0;
+    const bool brick_empty = bricks_[brick_index(brick)] == 0;
     const glm::ivec3 box_first = brick_empty ? brick * cells_per_brick_side : cell;
     const int box_cells = brick_empty ? cells_per_brick_side : 1;
     const auto [exit, axis] = exit_of(box_first, box_cells, origin, direction);
@@ -185,7 +180,7 @@ long OccupancyGrid::occupied_bricks(bool surveyed_bricks) const {
   for (int z = 0; z < bricks_per_side; ++z)
     for (int y = 0; y < bricks_per_side; ++y)
       for (int x = 0; x < bricks_per_side; ++x)
-        count += surveyed({x, y, z}) == surveyed_bricks && bricks_[(static_cast<std::size_t>(z) * bricks_per_side + y) * bricks_per_side + x] != 0;
+        count += surveyed({x, y, z}) == surveyed_bricks && bricks_[brick_index({x, y, z})] != 0;
   return count;
 }
 

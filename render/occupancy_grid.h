@@ -84,7 +84,10 @@ class OccupancyGrid {
  private:
   // The cell of the finest level that a point of the bounds lies in.
   glm::ivec3 cell_of(const glm::vec3& point) const;
-  std::uint8_t& brick_state(const glm::ivec3& brick);
+  static std::size_t brick_index(const glm::ivec3& brick) {
+    return (static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x;
+  }
+  std::uint8_t& brick_state(const glm::ivec3& brick) { return bricks_[brick_index(brick)]; }
   void set_cells(const glm::ivec3& brick, std::uint8_t state);
   bool inside(const glm::vec3& point) const;
   bool cell_occupied(const glm::ivec3& cell) const {

@@ -836,7 +836,8 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
   const double empty = (*grid)->surveyed_empty_fraction();
   if (empty < least_empty_cells) return found;
   const long surveyed = (*grid)->occupied_bricks(true), rest = (*grid)->occupied_bricks(false);
-  const double rest_seconds = surveyed > 0 ? survey_seconds * static_cast<double>(rest) / static_cast<double>(surveyed) : 0.0;
+  const double rest_seconds =
+      surveyed > 0 ? survey_seconds * static_cast<double>(rest) / static_cast<double>(surveyed) : 0.0;
   found.samples_saved = static_cast<double>(rays) * mean_chord(hi - lo) / step * empty;
   const double saved_seconds = found.samples_saved * costs.occupied * 1e-9 * (1.0 + march_cost_per_kernel_cost) /
                                static_cast<double>(worker_count(options.threads));
@@ -978,7 +979,8 @@ class VolumeFrames : public FrameRenderer {
                               stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds);
     else if (known)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              ", no empty space skipped (%s, as an earlier frame found)", why_not_skipped(declined, 0).c_str());
+                              ", no empty space skipped (%s, as an earlier frame found)",
+                              why_not_skipped(declined, 0).c_str());
     else if (options.skip_empty_space)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                               ", no empty space skipped (%s; bounded in %.3f s)",
