@@ -1,7 +1,10 @@
 #include "codegen/table_lookups.h"
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <llvm/IR/IRBuilder.h>
@@ -53,12 +56,39 @@ llvm::Value* lookup256(llvm::IRBuilder<>& builder, llvm::Module& module, const L
   return memory_lookup(builder, how.memory, element, table, index, width);
 }
 
-// st_gather256_pair_<type>_w<width>(at, next, table, index): a noise
-// table's entries at index and index + 1, which nodes/noise_tables.h keeps
-// adjacent (entry 0 again after the last). From memory, one 64-bit lookup
-// per lane split into its two halves: half the loads of two 32-bit
-// gathers. As bytes, both index vectors in one byte permute. From
-// sixteen registers, two lookups.
+// A noise table's entries at index and index + 1 (mod 256), which
+// nodes/noise_tables.h keeps adjacent (entry 0 again after the last). From
+// memory, one 64-bit lookup per lane split into its two halves: half the
+// loads of two 32-bit gathers. As bytes, both index vectors in one byte
+// permute. From sixteen registers, two lookups.
+std::pair<llvm::Value*, llvm::Value*> pair_lookup(llvm::IRBuilder<>& builder, llvm::Module& module,
+                                                  const Lookups256& how, bool is_float, llvm::Value* table,
+                                                  llvm::Value* index, int width) {
+  if (!is_float && how.ints_as_bytes) return x86_byte_table_pair_lookup(builder, module, table, index);
+  if (how.tables_in_registers) {
+    llvm::Value* next_index = builder.CreateAnd(
+        builder.CreateAdd(index, builder.CreateVectorSplat(width, builder.getInt32(1))),
+        builder.CreateVectorSplat(width, builder.getInt32(noise_table_size - 1)));
+    return {lookup256(builder, module, how, is_float, table, index, width),
+            lookup256(builder, module, how, is_float, table, next_index, width)};
+  }
+  llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
+  llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
+  llvm::Value* pairs =
+      builder.CreateBitCast(memory_lookup_at(builder, how.memory, builder.getInt64Ty(), addresses, width),
+                            llvm::FixedVectorType::get(element, static_cast<unsigned>(2 * width)));
+  // The entry at index is the pair's first half in memory: its low half on
+  // a little-endian target.
+  const int first_half = module.getDataLayout().isLittleEndian() ? 0 : 1;
+  std::vector<int> firsts, seconds;
+  for (int lane = 0; lane < width; ++lane) {
+    firsts.push_back(2 * lane + first_half);
+    seconds.push_back(2 * lane + 1 - first_half);
+  }
+  return {builder.CreateShuffleVector(pairs, firsts), builder.CreateShuffleVector(pairs, seconds)};
+}
+
+// st_gather256_pair_<type>_w<width>(at, next, table, index).
 void define_pair_lookup(llvm::Module& module, const Lookups256& how, int width, bool is_float) {
   llvm::Function* function =
       module.getFunction(std::string("st_gather256_pair_") + (is_float ? "f32" : "i32") + "_w" + std::to_string(width));
@@ -70,35 +100,103 @@ void define_pair_lookup(llvm::Module& module, const Lookups256& how, int width, 
   llvm::Value* table = &*args++;
   llvm::Value* index =
       builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
-  llvm::Value* at;
-  llvm::Value* next;
-  if (!is_float && how.ints_as_bytes) {
-    std::tie(at, next) = x86_byte_table_pair_lookup(builder, module, table, index);
-  } else if (how.tables_in_registers) {
-    llvm::Value* next_index = builder.CreateAnd(
-        builder.CreateAdd(index, builder.CreateVectorSplat(width, builder.getInt32(1))),
-        builder.CreateVectorSplat(width, builder.getInt32(noise_table_size - 1)));
-    at = lookup256(builder, module, how, is_float, table, index, width);
-    next = lookup256(builder, module, how, is_float, table, next_index, width);
-  } else {
-    llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
-    llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
-    llvm::Value* pairs =
-        builder.CreateBitCast(memory_lookup_at(builder, how.memory, builder.getInt64Ty(), addresses, width),
-                              llvm::FixedVectorType::get(element, static_cast<unsigned>(2 * width)));
-    // The entry at index is the pair's first half in memory: its low half
-    // on a little-endian target.
-    const int first_half = module.getDataLayout().isLittleEndian() ? 0 : 1;
-    std::vector<int> firsts, seconds;
-    for (int lane = 0; lane < width; ++lane) {
-      firsts.push_back(2 * lane + first_half);
-      seconds.push_back(2 * lane + 1 - first_half);
-    }
-    at = builder.CreateShuffleVector(pairs, firsts);
-    next = builder.CreateShuffleVector(pairs, seconds);
-  }
+  const auto [at, next] = pair_lookup(builder, module, how, is_float, table, index, width);
   builder.CreateStore(at, at_out);
   builder.CreateStore(next, next_out);
+  builder.CreateRetVoid();
+}
+
+// The mask of a shuffle that does the same within each group of four lanes
+// (each 128-bit lane of an x86 register): `pattern` names four elements of
+// the group as operand * 4 + element, operand 0 or 1.
+std::vector<int> within_each_quad(int width, std::array<int, 4> pattern) {
+  std::vector<int> mask;
+  for (int group = 0; group < width / 4; ++group)
+    for (int p : pattern) mask.push_back((p / 4) * width + 4 * group + p % 4);
+  return mask;
+}
+
+// A knot row's six gradient components from the interleaved table, one
+// lane at a time: the (x, y, z, 0) of entries index and index + 1 are two
+// 16-byte loads. Lanes l, l + 4, l + 8, ... are put side by side (one
+// register, a 128-bit quarter each) and four such registers transposed
+// within each quarter, as the four-by-four transpose of SSE code does.
+std::array<llvm::Value*, 6> interleaved_gradient_rows(llvm::IRBuilder<>& builder, llvm::Value* interleaved,
+                                                      llvm::Value* index, int width) {
+  auto* quad = llvm::FixedVectorType::get(builder.getFloatTy(), 4);
+  llvm::Value* byte_offsets = builder.CreateShl(index, builder.CreateVectorSplat(width, builder.getInt32(4)));
+  std::array<std::vector<llvm::Value*>, 2> entries;  // [knot][lane]: (x, y, z, 0)
+  for (int lane = 0; lane < width; ++lane) {
+    llvm::Value* offset = builder.CreateZExt(builder.CreateExtractElement(byte_offsets, lane), builder.getInt64Ty());
+    llvm::Value* at = builder.CreateInBoundsGEP(builder.getInt8Ty(), interleaved, offset);
+    for (int knot : {0, 1})
+      entries[knot].push_back(builder.CreateAlignedLoad(
+          quad, builder.CreateConstInBoundsGEP1_32(builder.getInt8Ty(), at, 16 * knot), llvm::Align(16)));
+  }
+  auto concatenate = [&](std::vector<llvm::Value*> parts) {
+    while (parts.size() > 1) {
+      std::vector<llvm::Value*> joined;
+      for (std::size_t i = 0; i < parts.size(); i += 2) {
+        const int count = 2 * static_cast<int>(llvm::cast<llvm::FixedVectorType>(parts[i]->getType())->getNumElements());
+        std::vector<int> all(static_cast<std::size_t>(count));
+        for (int e = 0; e < count; ++e) all[static_cast<std::size_t>(e)] = e;
+        joined.push_back(builder.CreateShuffleVector(parts[i], parts[i + 1], all));
+      }
+      parts = std::move(joined);
+    }
+    return parts[0];
+  };
+  std::array<llvm::Value*, 6> components;
+  for (int knot : {0, 1}) {
+    std::array<llvm::Value*, 4> rows;  // rows[k]: lanes k, k + 4, ... side by side
+    for (int k = 0; k < 4; ++k) {
+      std::vector<llvm::Value*> parts;
+      for (int lane = k; lane < width; lane += 4) parts.push_back(entries[knot][static_cast<std::size_t>(lane)]);
+      rows[static_cast<std::size_t>(k)] = concatenate(parts);
+    }
+    llvm::Value* xy01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {0, 4, 1, 5}));
+    llvm::Value* xy23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {0, 4, 1, 5}));
+    llvm::Value* z01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
+    llvm::Value* z23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
+    components[static_cast<std::size_t>(0 + knot)] =
+        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
+    components[static_cast<std::size_t>(2 + knot)] =
+        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
+    components[static_cast<std::size_t>(4 + knot)] =
+        builder.CreateShuffleVector(z01, z23, within_each_quad(width, {0, 1, 4, 5}));
+  }
+  return components;
+}
+
+// st_gather256_gradient_pairs_w<width>(out, tables, index): the three
+// hashed gradient tables' entries at index and index + 1, x then y then z.
+// Read lane by lane, the interleaved table gives all six with two loads a
+// lane instead of three pair lookups; otherwise three pair lookups.
+void define_gradient_pairs_lookup(llvm::Module& module, const Lookups256& how, int width) {
+  llvm::Function* function = module.getFunction("st_gather256_gradient_pairs_w" + std::to_string(width));
+  if (!function || !function->isDeclaration()) return;
+  llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
+  auto args = function->arg_begin();
+  llvm::Value* out = &*args++;
+  llvm::Value* tables = &*args++;
+  auto* vector = llvm::FixedVectorType::get(builder.getFloatTy(), static_cast<unsigned>(width));
+  llvm::Value* index =
+      builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
+  auto field = [&](std::size_t offset) {
+    return builder.CreateConstInBoundsGEP1_64(builder.getInt8Ty(), tables, offset);
+  };
+  std::array<llvm::Value*, 6> components;
+  if (!how.tables_in_registers && how.memory == GatherStrategy::per_lane) {
+    components = interleaved_gradient_rows(builder, field(offsetof(NoiseTables, hashed_gradient_xyz0)), index, width);
+  } else {
+    const std::size_t offsets[] = {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
+                                   offsetof(NoiseTables, hashed_gradient_z)};
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      std::tie(components[2 * axis], components[2 * axis + 1]) =
+          pair_lookup(builder, module, how, true, field(offsets[axis]), index, width);
+  }
+  for (std::size_t c = 0; c < components.size(); ++c)
+    builder.CreateStore(components[c], builder.CreateConstInBoundsGEP1_64(vector, out, c));
   builder.CreateRetVoid();
 }
 
@@ -146,6 +244,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
     const Lookups256 how{in_register ? GatherStrategy::hardware : strategy, in_register && float_tables_in_registers,
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
+    define_gradient_pairs_lookup(module, how, width);
     for (bool is_float : {true, false}) {
       define_pair_lookup(module, how, width, is_float);
       for (bool table256 : {false, true}) {

@@ -231,7 +231,8 @@ class CppEmitter {
       const NoiseTables& tables = noise_tables(static_cast<std::uint32_t>(seed));
       auto ints = [](std::int32_t v) { return std::to_string(v); };
       out << "// Perlin & Hoffert 1989 section 2.3: the noise tables of seed " << seed << ".\n"
-          << "inline constexpr NoiseTables tables_" << seed << " = {\n    {{" << list(tables.permutation, ints)
+          << "inline constexpr NoiseTables tables_" << seed << " = {\n    {{"
+          << list(tables.hashed_gradient_xyz0, float_literal) << "}},\n    {{" << list(tables.permutation, ints)
           << "}},\n";
       for (const auto* table : {&tables.gradient_x, &tables.gradient_y, &tables.gradient_z, &tables.hashed_gradient_x,
                                 &tables.hashed_gradient_y, &tables.hashed_gradient_z})

@@ -39,7 +39,8 @@ bool host_is_amd() {
 }  // namespace
 
 // Measured with `shadetree bench --gathers` on both vendors (figures in
-// docs/architecture.md, "Table lookups"): per-lane loads beat vgatherdps
+// docs/architecture.md, "Table lookups"): per-lane loads, which read a
+// knot row's gradients from the interleaved table, beat vpgatherqq pairs
 // without AVX-512. With it, AMD's gathers are slow and permutes over
 // registers win, the permutation as bytes (VBMI) cheapest; Intel's
 // gathers beat the permute tree over sixteen registers of a float table,

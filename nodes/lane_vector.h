@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 
+#include "nodes/noise_tables.h"
+
 namespace shadetree::lanes {
 
 template <int W>
@@ -16,8 +18,11 @@ template <int W>
 using intv = std::int32_t __attribute__((ext_vector_type(W)));
 
 // Table lookups are declared here and defined by the code generator
-// (codegen/emit_kernel.cpp), which picks the instruction sequence per
-// target: a hardware gather or one load per lane.
+// (codegen/table_lookups.cpp), which picks the instruction sequence per
+// target: a hardware gather, one load per lane, or permutes of registers.
+// gather256_gradient_pairs, the three hashed gradient tables' pairs at
+// index (out: x at index and index + 1, then y, then z), exists only in
+// this lane (nodes/semantics/noise.h asks whether it does).
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
@@ -28,7 +33,9 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather256_pair_i32_w##W(intv<W>* at, intv<W>* next, const std::int32_t* table,          \
                                              const intv<W>* index);                                          \
   extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
-                                           const intv<W>* index);
+                                           const intv<W>* index);                                           \
+  extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
+                                                   const intv<W>* index);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
@@ -88,6 +95,12 @@ SHADETREE_VECTOR_GATHERS(16)
     floatv<W> result;                                                                                        \
     st_gather_small_f32_w##W(&result, table, size, &index);                                                  \
     return result;                                                                                           \
+  }                                                                                                          \
+  inline std::array<std::array<floatv<W>, 2>, 3> gather256_gradient_pairs(const NoiseTables& tables,        \
+                                                                          intv<W> index) {                  \
+    floatv<W> result[6];                                                                                     \
+    st_gather256_gradient_pairs_w##W(result, &tables, &index);                                               \
+    return {{{result[0], result[1]}, {result[2], result[3]}, {result[4], result[5]}}};                       \
   }
 
 SHADETREE_VECTOR_LANES(4)

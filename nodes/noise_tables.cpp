@@ -61,6 +61,11 @@ NoiseTables make_noise_tables(std::uint32_t seed) {
                                &tables.hashed_gradient_y, &tables.hashed_gradient_z})
     (*table)[noise_table_size] = (*table)[0];
   tables.permutation[noise_table_size] = tables.permutation[0];
+  for (int i = 0; i <= noise_table_size; ++i) {
+    tables.hashed_gradient_xyz0[4 * i + 0] = tables.hashed_gradient_x[i];
+    tables.hashed_gradient_xyz0[4 * i + 1] = tables.hashed_gradient_y[i];
+    tables.hashed_gradient_xyz0[4 * i + 2] = tables.hashed_gradient_z[i];
+  }
   return tables;
 }
 

@@ -89,6 +89,8 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, width), "");
   EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 0, std::nullopt, Optimization::quick), "")
       << "quick kernel";
+  EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 8, GatherStrategy::hardware), "")
+      << "hardware gathers at width 8";
   if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
   for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
                                  GatherStrategy::in_register_byte_permutes, GatherStrategy::byte_permutes_and_gathers})

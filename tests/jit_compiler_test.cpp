@@ -174,7 +174,9 @@ TEST(JitCompiler, CompiledObjectsGoToTheDiskCache) {
 // Enough work for a kernel split in two (codegen/kernel_split.h).
 const std::string split_graph = testing::graph_text(
     R"({"id": "p", "op": "P"}, {"id": "t", "op": "turbulence", "in": {"p": "p", "octaves": 6}},
-       {"id": "f", "op": "fbm", "in": {"p": "p", "octaves": 5}}, {"id": "s", "op": "add", "in": {"a": "t", "b": "f"}},
+       {"id": "f", "op": "fbm", "in": {"p": "p", "octaves": 5}}, {"id": "tf", "op": "add", "in": {"a": "t", "b": "f"}},
+       {"id": "q", "op": "mul", "in": {"a": "p", "b": 3}}, {"id": "v", "op": "dnoise", "in": {"p": "q"}},
+       {"id": "l", "op": "length", "in": {"v": "v"}}, {"id": "s", "op": "add", "in": {"a": "tf", "b": "l"}},
        {"id": "k", "op": "spline", "in": {"x": "s"}, "basis": "catmull-rom",
         "knots": [[0, 0, 0], [0, 0.1, 0.2], [0.5, 0.4, 0.3], [1, 0.9, 0.6], [1, 1, 1]]},
        {"id": "n", "op": "noise", "in": {"p": "p"}}, {"id": "m", "op": "mul", "in": {"a": "k", "b": "n"}})",

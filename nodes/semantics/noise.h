@@ -1,6 +1,9 @@
 // Noise generators, written once over a lane type F (see nodes/lane_scalar.h).
 #pragma once
 
+#include <type_traits>
+#include <utility>
+
 #include "nodes/improved_noise_permutation.h"
 #include "nodes/lane_scalar.h"
 #include "nodes/limits.h"
@@ -119,6 +122,15 @@ auto entries_at_cells(const T* table, const Axis& axis, I hash) {
   }
 }
 
+// Whether lanes of index type I read the interleaved gradient table
+// (gather256_gradient_pairs: declared by nodes/lane_vector.h only).
+template <class I, class = void>
+struct ReadsInterleavedGradients : std::false_type {};
+template <class I>
+struct ReadsInterleavedGradients<
+    I, std::void_t<decltype(gather256_gradient_pairs(std::declval<const NoiseTables&>(), std::declval<I>()))>>
+    : std::true_type {};
+
 // The two knots (0, j, k) and (1, j, k) of a row along x, at slots
 // (i + phi(j + phi(k))) mod n.
 template <class Axis, class I>
@@ -127,6 +139,18 @@ struct KnotRow {
   I hash_jk;
   I slot(int di) const { return cell_slot(x_axis, hash_jk, di); }
   auto entries(const float* table) const { return entries_at_cells(table, x_axis, hash_jk); }
+  // The knots' gradients G[phi(slot)]: x at both knots, then y, then z. The
+  // JIT's lanes take all six in one lookup, which reads the interleaved
+  // table where memory is read lane by lane (codegen/table_lookups.cpp).
+  std::array<std::array<decltype(gather256(static_cast<const float*>(nullptr), I{})), 2>, 3> gradients(
+      const NoiseTables& tables) const {
+    if constexpr (Axis::next_cell_hashes_next && ReadsInterleavedGradients<I>::value) {
+      return gather256_gradient_pairs(tables, slot(0));
+    } else {
+      return {entries(tables.hashed_gradient_x.data()), entries(tables.hashed_gradient_y.data()),
+              entries(tables.hashed_gradient_z.data())};
+    }
+  }
 };
 
 // Visits the 2^3 knots around p (1989 section 2.3) a row at a time, in the
@@ -183,9 +207,7 @@ F noise_on_axes(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const 
   F sum = splat<F>(0.0f);
   for_each_noise_row(tables, x, y, z, ax, ay, az, IntOf<F>{} + 0,
                      [&](const auto& row, const std::array<F, 2>& u, F v, F w) {
-                       const auto gx = row.entries(tables.hashed_gradient_x.data());
-                       const auto gy = row.entries(tables.hashed_gradient_y.data());
-                       const auto gz = row.entries(tables.hashed_gradient_z.data());
+                       const auto [gx, gy, gz] = row.gradients(tables);
                        each_of_0_and_1([&](auto di) {
                          F slope = gx[di] * u[di] + gy[di] * v + gz[di] * w;
                          sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(w) * slope;
@@ -214,9 +236,7 @@ Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
   Vec3<F> sum{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
   for_each_noise_row(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z), IntOf<F>{} + 0,
                      [&](const auto& row, const std::array<F, 2>& knot_u, F v, F w) {
-                       const auto row_gx = row.entries(tables.hashed_gradient_x.data());
-                       const auto row_gy = row.entries(tables.hashed_gradient_y.data());
-                       const auto row_gz = row.entries(tables.hashed_gradient_z.data());
+                       const auto [row_gx, row_gy, row_gz] = row.gradients(tables);
                        each_of_0_and_1([&](auto di) {
                          F u = knot_u[di], gx = row_gx[di], gy = row_gy[di], gz = row_gz[di];
                          F slope = gx * u + gy * v + gz * w;

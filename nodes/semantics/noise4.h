@@ -61,8 +61,8 @@ F noise4_on_axes(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, 
   F sum = splat<F>(0.0f);
   for_each_noise4_row(tables, x, y, z, w, ax, ay, az, aw,
                       [&](const auto& row, const std::array<F, 2>& u, F v, F s, F t) {
-                        const auto gx = row.entries(gradient[0]), gy = row.entries(gradient[1]),
-                                   gz = row.entries(gradient[2]), gw = row.entries(gradient[3]);
+                        const auto [gx, gy, gz] = row.gradients(tables);
+                        const auto gw = row.entries(gradient[3]);
                         each_of_0_and_1([&](auto di) {
                           sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(s) * noise_weight(t) *
                                           noise4_slope(std::array{gx[di], gy[di], gz[di], gw[di]}, u[di], v, s, t);
