@@ -24,6 +24,7 @@
 #include <immintrin.h>
 #pragma GCC diagnostic pop
 
+#include "bench/yardstick_knots.h"
 #include "nodes/noise_tables.h"
 
 #define SHADETREE_AVX512 __attribute__((target("avx512f")))
@@ -224,19 +225,6 @@ SHADETREE_AVX512 __m512 power16(__m512 x, float exponent) {
 struct Colour16 {
   __m512 red, green, blue;
 };
-
-// A colour spline's 8 knots, component by component, knot k in lane k.
-struct SplineKnots {
-  float component[3][16];
-};
-
-constexpr SplineKnots turbulence_knots = {{{0.02f, 0.02f, 0.08f, 0.1f, 0.35f, 0.8f, 1.0f, 1.0f},
-                                           {0.02f, 0.02f, 0.12f, 0.4f, 0.72f, 0.93f, 1.0f, 1.0f},
-                                           {0.08f, 0.08f, 0.35f, 0.65f, 0.82f, 0.95f, 1.0f, 1.0f}}};
-
-constexpr SplineKnots marble_knots = {{{0.95f, 0.95f, 0.8f, 0.62f, 0.4f, 0.2f, 0.1f, 0.1f},
-                                       {0.93f, 0.93f, 0.78f, 0.6f, 0.38f, 0.18f, 0.08f, 0.08f},
-                                       {0.9f, 0.9f, 0.76f, 0.6f, 0.42f, 0.24f, 0.12f, 0.12f}}};
 
 // Perlin 1985's spline(): Catmull-Rom through knots 1..6 over x in [0,1].
 SHADETREE_AVX512 Colour16 catmull_rom16(const SplineKnots& knots, __m512 x) {

@@ -1,6 +1,7 @@
 // Noise, turbulence and marble (bench/graphs/noise.json, graphs/
 // turbulence.json, graphs/marble.json): the JIT at the host's width against
-// the hand-written yardsticks, scalar C++ built by g++ and by clang++ and
+// the hand-written yardsticks, scalar C++ built by g++ and by clang++, AVX2
+// intrinsics with gathers and with the interleaved gradient table, and
 // AVX-512 intrinsics with gathers and with in-register lookups, one
 // thread each, on the same samples: each graph's render domain at
 // 1024x1024. Run
@@ -21,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/avx2_yardsticks.h"
 #include "bench/avx512_yardsticks.h"
 #include "bench/ratio_table_reporter.h"
 #include "bench/scalar_yardsticks.h"
@@ -45,22 +47,37 @@ constexpr TextureGraph textures[] = {{"noise", SHADETREE_SOURCE_DIR "/bench/grap
                                 {"turbulence", SHADETREE_SOURCE_DIR "/graphs/turbulence.json"},
                                 {"marble", SHADETREE_SOURCE_DIR "/graphs/marble.json"}};
 
+// What a yardstick's instructions need of the host.
+struct Needs {
+  bool (*host_has)();  // nullptr: any x86-64 host
+  const char* missing;
+};
+constexpr Needs any_host{nullptr, ""}, avx2{yardstick::host_has_avx2, "no AVX2 on this host"},
+    avx512{yardstick::host_has_avx512, "no AVX-512 on this host"};
+
 struct Yardstick {
   const char* name;
   PlaneKernel* kernel[3];  // by texture
-  bool needs_avx512;
+  Needs needs;
 };
 
 const Yardstick yardsticks[] = {
-    {"scalar_gcc", {yardstick::gcc::noise, yardstick::gcc::turbulence, yardstick::gcc::marble}, false},
-    {"scalar_clang", {yardstick::clang::noise, yardstick::clang::turbulence, yardstick::clang::marble}, false},
+    {"scalar_gcc", {yardstick::gcc::noise, yardstick::gcc::turbulence, yardstick::gcc::marble}, any_host},
+    {"scalar_clang", {yardstick::clang::noise, yardstick::clang::turbulence, yardstick::clang::marble}, any_host},
+    {"avx2_gathers",
+     {yardstick::avx2_gathers::noise, yardstick::avx2_gathers::turbulence, yardstick::avx2_gathers::marble},
+     avx2},
+    {"avx2_interleaved",
+     {yardstick::avx2_interleaved::noise, yardstick::avx2_interleaved::turbulence,
+      yardstick::avx2_interleaved::marble},
+     avx2},
     {"avx512_gathers",
      {yardstick::avx512_gathers::noise, yardstick::avx512_gathers::turbulence, yardstick::avx512_gathers::marble},
-     true},
+     avx512},
     {"avx512_in_register",
      {yardstick::avx512_in_register::noise, yardstick::avx512_in_register::turbulence,
       yardstick::avx512_in_register::marble},
-     true}};
+     avx512}};
 
 // A texture's samples, its JIT kernel bound to its default params, and the
 // colour that kernel computes, made once for every benchmark of the texture.
@@ -141,8 +158,8 @@ void time_jit(benchmark::State& state, int texture) {
 }
 
 void time_yardstick(benchmark::State& state, int texture, const Yardstick& yardstick) {
-  if (yardstick.needs_avx512 && !yardstick::host_has_avx512()) {
-    state.SkipWithError("no AVX-512 on this host");
+  if (yardstick.needs.host_has && !yardstick.needs.host_has()) {
+    state.SkipWithError(yardstick.needs.missing);
     return;
   }
   TextureUnderTest& under_test = texture_under_test(texture);
