@@ -116,21 +116,22 @@ std::vector<int> within_each_quad(int width, std::array<int, 4> pattern) {
   return mask;
 }
 
-// A knot row's six gradient components from the interleaved table, one
-// lane at a time: the (x, y, z, 0) of entries index and index + 1 are two
-// 16-byte loads. Lanes l, l + 4, l + 8, ... are put side by side (one
+// Gradient components from the interleaved table, one lane at a time:
+// the (x, y, z, 0) of entry index, and with `knots` 2 of index + 1 too,
+// are 16-byte loads. Lanes l, l + 4, l + 8, ... are put side by side (one
 // register, a 128-bit quarter each) and four such registers transposed
 // within each quarter, as the four-by-four transpose of SSE code does.
-std::array<llvm::Value*, 6> interleaved_gradient_rows(llvm::IRBuilder<>& builder, llvm::Value* interleaved,
-                                                      llvm::Value* index, int width) {
+// Returns x at each knot, then y, then z.
+std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm::Value* interleaved,
+                                                llvm::Value* index, int width, int knots) {
   auto* quad = llvm::FixedVectorType::get(builder.getFloatTy(), 4);
   llvm::Value* byte_offsets = builder.CreateShl(index, builder.CreateVectorSplat(width, builder.getInt32(4)));
-  std::array<std::vector<llvm::Value*>, 2> entries;  // [knot][lane]: (x, y, z, 0)
+  std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));  // [knot][lane]: (x, y, z, 0)
   for (int lane = 0; lane < width; ++lane) {
     llvm::Value* offset = builder.CreateZExt(builder.CreateExtractElement(byte_offsets, lane), builder.getInt64Ty());
     llvm::Value* at = builder.CreateInBoundsGEP(builder.getInt8Ty(), interleaved, offset);
-    for (int knot : {0, 1})
-      entries[knot].push_back(builder.CreateAlignedLoad(
+    for (int knot = 0; knot < knots; ++knot)
+      entries[static_cast<std::size_t>(knot)].push_back(builder.CreateAlignedLoad(
           quad, builder.CreateConstInBoundsGEP1_32(builder.getInt8Ty(), at, 16 * knot), llvm::Align(16)));
   }
   auto concatenate = [&](std::vector<llvm::Value*> parts) {
@@ -146,34 +147,36 @@ std::array<llvm::Value*, 6> interleaved_gradient_rows(llvm::IRBuilder<>& builder
     }
     return parts[0];
   };
-  std::array<llvm::Value*, 6> components;
-  for (int knot : {0, 1}) {
+  std::vector<llvm::Value*> components(static_cast<std::size_t>(3 * knots));
+  for (int knot = 0; knot < knots; ++knot) {
     std::array<llvm::Value*, 4> rows;  // rows[k]: lanes k, k + 4, ... side by side
     for (int k = 0; k < 4; ++k) {
       std::vector<llvm::Value*> parts;
-      for (int lane = k; lane < width; lane += 4) parts.push_back(entries[knot][static_cast<std::size_t>(lane)]);
+      for (int lane = k; lane < width; lane += 4)
+        parts.push_back(entries[static_cast<std::size_t>(knot)][static_cast<std::size_t>(lane)]);
       rows[static_cast<std::size_t>(k)] = concatenate(parts);
     }
     llvm::Value* xy01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {0, 4, 1, 5}));
     llvm::Value* xy23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {0, 4, 1, 5}));
     llvm::Value* z01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
     llvm::Value* z23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
-    components[static_cast<std::size_t>(0 + knot)] =
-        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
-    components[static_cast<std::size_t>(2 + knot)] =
-        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
-    components[static_cast<std::size_t>(4 + knot)] =
-        builder.CreateShuffleVector(z01, z23, within_each_quad(width, {0, 1, 4, 5}));
+    const auto at = [&](int axis) { return static_cast<std::size_t>(axis * knots + knot); };
+    components[at(0)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
+    components[at(1)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
+    components[at(2)] = builder.CreateShuffleVector(z01, z23, within_each_quad(width, {0, 1, 4, 5}));
   }
   return components;
 }
 
-// st_gather256_gradient_pairs_w<width>(out, tables, index): the three
-// hashed gradient tables' entries at index and index + 1, x then y then z.
-// Read lane by lane, the interleaved table gives all six with two loads a
-// lane instead of three pair lookups; otherwise three pair lookups.
-void define_gradient_pairs_lookup(llvm::Module& module, const Lookups256& how, int width) {
-  llvm::Function* function = module.getFunction("st_gather256_gradient_pairs_w" + std::to_string(width));
+// st_gather256_gradients_w<width>(out, tables, index), one knot's
+// gradient, and st_gather256_gradient_pairs_w<width>(out, tables, index),
+// a knot row's (index and index + 1): from the three hashed gradient
+// tables, x then y then z. Read lane by lane, the interleaved table gives
+// each knot's three components with one load a lane instead of three;
+// otherwise lookups of each table.
+void define_gradient_lookup(llvm::Module& module, const Lookups256& how, int width, int knots) {
+  llvm::Function* function = module.getFunction(
+      std::string(knots == 2 ? "st_gather256_gradient_pairs_w" : "st_gather256_gradients_w") + std::to_string(width));
   if (!function || !function->isDeclaration()) return;
   llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
   auto args = function->arg_begin();
@@ -185,15 +188,20 @@ void define_gradient_pairs_lookup(llvm::Module& module, const Lookups256& how, i
   auto field = [&](std::size_t offset) {
     return builder.CreateConstInBoundsGEP1_64(builder.getInt8Ty(), tables, offset);
   };
-  std::array<llvm::Value*, 6> components;
+  std::vector<llvm::Value*> components;
   if (!how.tables_in_registers && how.memory == GatherStrategy::per_lane) {
-    components = interleaved_gradient_rows(builder, field(offsetof(NoiseTables, hashed_gradient_xyz0)), index, width);
+    components =
+        interleaved_gradients(builder, field(offsetof(NoiseTables, hashed_gradient_xyz0)), index, width, knots);
   } else {
-    const std::size_t offsets[] = {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
-                                   offsetof(NoiseTables, hashed_gradient_z)};
-    for (std::size_t axis = 0; axis < 3; ++axis)
-      std::tie(components[2 * axis], components[2 * axis + 1]) =
-          pair_lookup(builder, module, how, true, field(offsets[axis]), index, width);
+    for (std::size_t offset : {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
+                               offsetof(NoiseTables, hashed_gradient_z)}) {
+      if (knots == 2) {
+        const auto [at, next] = pair_lookup(builder, module, how, true, field(offset), index, width);
+        components.insert(components.end(), {at, next});
+      } else {
+        components.push_back(lookup256(builder, module, how, true, field(offset), index, width));
+      }
+    }
   }
   for (std::size_t c = 0; c < components.size(); ++c)
     builder.CreateStore(components[c], builder.CreateConstInBoundsGEP1_64(vector, out, c));
@@ -244,7 +252,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
     const Lookups256 how{in_register ? GatherStrategy::hardware : strategy, in_register && float_tables_in_registers,
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
-    define_gradient_pairs_lookup(module, how, width);
+    for (int knots : {1, 2}) define_gradient_lookup(module, how, width, knots);
     for (bool is_float : {true, false}) {
       define_pair_lookup(module, how, width, is_float);
       for (bool table256 : {false, true}) {

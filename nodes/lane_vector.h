@@ -20,9 +20,10 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // Table lookups are declared here and defined by the code generator
 // (codegen/table_lookups.cpp), which picks the instruction sequence per
 // target: a hardware gather, one load per lane, or permutes of registers.
-// gather256_gradient_pairs, the three hashed gradient tables' pairs at
-// index (out: x at index and index + 1, then y, then z), exists only in
-// this lane (nodes/semantics/noise.h asks whether it does).
+// gather256_gradients and gather256_gradient_pairs, the three hashed
+// gradient tables at index (and with pairs at index + 1: out is x at both,
+// then y, then z), exist only in this lane (nodes/semantics/noise.h asks
+// whether they do).
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
@@ -34,6 +35,7 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
                                              const intv<W>* index);                                          \
   extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
                                            const intv<W>* index);                                           \
+  extern "C" void st_gather256_gradients_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* index); \
   extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
                                                    const intv<W>* index);
 
@@ -94,6 +96,11 @@ SHADETREE_VECTOR_GATHERS(16)
   inline floatv<W> gather_small(const float* table, std::int32_t size, intv<W> index) {                     \
     floatv<W> result;                                                                                        \
     st_gather_small_f32_w##W(&result, table, size, &index);                                                  \
+    return result;                                                                                           \
+  }                                                                                                          \
+  inline std::array<floatv<W>, 3> gather256_gradients(const NoiseTables& tables, intv<W> index) {            \
+    std::array<floatv<W>, 3> result;                                                                         \
+    st_gather256_gradients_w##W(result.data(), &tables, &index);                                             \
     return result;                                                                                           \
   }                                                                                                          \
   inline std::array<std::array<floatv<W>, 2>, 3> gather256_gradient_pairs(const NoiseTables& tables,        \

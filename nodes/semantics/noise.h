@@ -140,12 +140,16 @@ struct KnotRow {
   I slot(int di) const { return cell_slot(x_axis, hash_jk, di); }
   auto entries(const float* table) const { return entries_at_cells(table, x_axis, hash_jk); }
   // The knots' gradients G[phi(slot)]: x at both knots, then y, then z. The
-  // JIT's lanes take all six in one lookup, which reads the interleaved
-  // table where memory is read lane by lane (codegen/table_lookups.cpp).
+  // JIT's lanes take all six in one lookup (two where a periodic axis
+  // wraps the row's second cell), which reads the interleaved table where
+  // memory is read lane by lane (codegen/table_lookups.cpp).
   std::array<std::array<decltype(gather256(static_cast<const float*>(nullptr), I{})), 2>, 3> gradients(
       const NoiseTables& tables) const {
     if constexpr (Axis::next_cell_hashes_next && ReadsInterleavedGradients<I>::value) {
       return gather256_gradient_pairs(tables, slot(0));
+    } else if constexpr (ReadsInterleavedGradients<I>::value) {
+      const auto at = gather256_gradients(tables, slot(0)), next = gather256_gradients(tables, slot(1));
+      return {{{at[0], next[0]}, {at[1], next[1]}, {at[2], next[2]}}};
     } else {
       return {entries(tables.hashed_gradient_x.data()), entries(tables.hashed_gradient_y.data()),
               entries(tables.hashed_gradient_z.data())};
