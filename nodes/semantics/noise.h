@@ -123,7 +123,8 @@ auto entries_at_cells(const T* table, const Axis& axis, I hash) {
 }
 
 // Whether lanes of index type I read the interleaved gradient table
-// (gather256_gradient_pairs: declared by nodes/lane_vector.h only).
+// (gather256_gradients and gather256_gradient_pairs, which only
+// nodes/lane_vector.h declares; asking for the pairs tells of both).
 template <class I, class = void>
 struct ReadsInterleavedGradients : std::false_type {};
 template <class I>
