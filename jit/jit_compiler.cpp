@@ -19,6 +19,7 @@
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 #include <llvm/IR/Module.h>
+#include <llvm/Object/ObjectFile.h>
 #include <llvm/Support/ErrorHandling.h>
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
@@ -29,6 +30,7 @@
 #include "codegen/op_library.h"
 #include "jit/host_target.h"
 #include "jit/kernel_object_cache.h"
+#include "jit/module_halves.h"
 #include "platform/user_cache.h"
 #include "jit/optimization_pipeline.h"
 #include "nodes/noise_tables.h"
@@ -112,14 +114,48 @@ std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) 
   return text.str();
 }
 
-// A kernel's object files: the one with its bind and run functions first,
-// then a split kernel's first part (codegen/kernel_split.h).
-using KernelObjects = std::vector<std::unique_ptr<llvm::MemoryBuffer>>;
+// One object file of a kernel, under the name the disk cache keeps it by.
+struct KernelObject {
+  std::string name;
+  std::unique_ptr<llvm::MemoryBuffer> code;
+};
+// A kernel's object files: its modules' (the one with the bind and run
+// functions first, then a split kernel's first part:
+// codegen/kernel_split.h), each followed by its half if its code was
+// generated in two (jit/module_halves.h).
+using KernelObjects = std::vector<KernelObject>;
 
-// The names the objects of kernel `name` are cached under, in that order.
-std::vector<std::string> object_names(const std::string& name, const std::optional<KernelSplit>& split) {
+// The name of kernel `name`'s module `part`.
+std::string module_name(const std::string& name, KernelPart part) {
+  return part == KernelPart::first ? name + "_first" : name;
+}
+
+// The names of the modules of kernel `name`, in that order.
+std::vector<std::string> module_names(const std::string& name, const std::optional<KernelSplit>& split) {
   if (!split) return {name};
-  return {name, name + "_first"};
+  return {name, module_name(name, KernelPart::first)};
+}
+
+// The name of the function, and of the object, that holds the half of
+// module `module_name` compiled apart.
+std::string half_name(const std::string& module_name) { return module_name + "_half"; }
+
+// Whether object file `object` calls the function `name` defined
+// elsewhere; a file that is no object calls nothing.
+bool calls(const llvm::MemoryBuffer& object, const std::string& name) {
+  auto file = llvm::object::ObjectFile::createObjectFile(object.getMemBufferRef());
+  if (!file) {
+    llvm::consumeError(file.takeError());
+    return false;
+  }
+  for (const llvm::object::SymbolRef& symbol : (*file)->symbols()) {
+    auto flags = symbol.getFlags();
+    auto symbol_name = symbol.getName();
+    if (flags && symbol_name && (*flags & llvm::object::SymbolRef::SF_Undefined) && *symbol_name == name) return true;
+    if (!flags) llvm::consumeError(flags.takeError());
+    if (!symbol_name) llvm::consumeError(symbol_name.takeError());
+  }
+  return false;
 }
 
 std::string kernel_name(const std::string& key) {
@@ -169,16 +205,21 @@ class Jit {
         return compiled(code, CacheHit::memory, elapsed());
       if (!folder.empty()) {
         // Every object of the kernel, or none (the folder is pruned object
-        // by object).
+        // by object): each module's, and its half's if it calls one.
         KernelObjects objects;
         std::vector<std::filesystem::path> files;
-        for (const std::string& object_name : object_names(name, kernel_split(ir, width))) {
-          files.push_back(folder / (object_name + ".o"));
-          auto object = llvm::MemoryBuffer::getFile(files.back().string());
-          if (!object) break;
-          objects.push_back(std::move(*object));
-        }
-        if (objects.size() == files.size()) {
+        bool complete = true;
+        for (const std::string& module_name : module_names(name, kernel_split(ir, width)))
+          for (const std::string& object_name : {module_name, half_name(module_name)}) {
+            if (object_name != module_name && !calls(*objects.back().code, object_name)) continue;
+            const std::filesystem::path file = folder / (object_name + ".o");
+            auto object = llvm::MemoryBuffer::getFile(file.string());
+            complete = complete && object;
+            if (!complete) break;
+            files.push_back(file);
+            objects.push_back({object_name, std::move(*object)});
+          }
+        if (complete) {
           Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(objects));
           if (code) {
             std::error_code ignored;  // recently used: the last to be pruned
@@ -192,11 +233,9 @@ class Jit {
     if (cached_only) return compiled({}, CacheHit::none, 0);
     Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
     if (!objects) return objects.error();
-    if (!folder.empty()) {
-      const std::vector<std::string> names = object_names(name, kernel_split(ir, width));
-      for (std::size_t i = 0; i < names.size(); ++i)
-        store_kernel_object(folder, names[i], (*objects)[i]->getBuffer(), settings.disk_cache_objects);
-    }
+    if (!folder.empty())
+      for (const KernelObject& object : *objects)
+        store_kernel_object(folder, object.name, object.code->getBuffer(), settings.disk_cache_objects);
     std::lock_guard lock(mutex_);
     // Another thread may have compiled the same program meanwhile.
     if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
@@ -286,54 +325,81 @@ class Jit {
   Result<KernelObjects> compile_objects(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
                                         Optimization optimization) const {
     const std::optional<KernelSplit> split = kernel_split(ir, width);
-    KernelObjects objects;
-    if (!split) {
-      Result<std::unique_ptr<llvm::MemoryBuffer>> object =
-          compile_object(ir, width, name, gathers, optimization, KernelPart::whole, {});
-      if (!object) return object.error();
-      objects.push_back(std::move(*object));
-      return objects;
-    }
-    std::optional<Result<std::unique_ptr<llvm::MemoryBuffer>>> first;
-    std::thread first_part([&] { first = compile_object(ir, width, name, gathers, optimization, KernelPart::first, *split); });
-    Result<std::unique_ptr<llvm::MemoryBuffer>> second =
-        compile_object(ir, width, name, gathers, optimization, KernelPart::second, *split);
+    if (!split) return compile_module(ir, width, name, gathers, optimization, KernelPart::whole, {});
+    std::optional<Result<KernelObjects>> first;
+    std::thread first_part(
+        [&] { first = compile_module(ir, width, name, gathers, optimization, KernelPart::first, *split); });
+    Result<KernelObjects> objects = compile_module(ir, width, name, gathers, optimization, KernelPart::second, *split);
     first_part.join();
-    if (!second) return second.error();
+    if (!objects) return objects.error();
     if (!*first) return first->error();
-    objects.push_back(std::move(*second));
-    objects.push_back(std::move(**first));
+    for (KernelObject& object : **first) objects->push_back(std::move(object));
     return objects;
   }
 
-  // The object file of the kernel's module `part`, built on the calling
-  // thread.
-  Result<std::unique_ptr<llvm::MemoryBuffer>> compile_object(const ShadeIR& ir, int width, const std::string& name,
-                                                             GatherStrategy gathers, Optimization optimization,
-                                                             KernelPart part, const KernelSplit& split) const {
+  // The object files of the kernel's module `part`, built on the calling
+  // thread; a module whose longest block is long enough has the first half
+  // of that block compiled on a thread of its own (jit/module_halves.h).
+  Result<KernelObjects> compile_module(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
+                                       Optimization optimization, KernelPart part, const KernelSplit& split) const {
+    const std::string half = half_name(module_name(name, part));
+    llvm::LLVMContext context;
+    Result<std::unique_ptr<llvm::Module>> module = optimized_module(ir, width, context, name, gathers, optimization, part, split);
+    if (!module) return module.error();
+    std::optional<llvm::SmallVector<char, 0>> half_bitcode;
+    if (optimization == Optimization::full) half_bitcode = split_off_half(**module, half);
+    std::optional<Result<std::unique_ptr<llvm::MemoryBuffer>>> half_object;
+    std::thread half_thread;
+    if (half_bitcode)
+      half_thread = std::thread([&] {
+        llvm::LLVMContext half_context;
+        Result<std::unique_ptr<llvm::Module>> half_code =
+            half_module(llvm::StringRef(half_bitcode->data(), half_bitcode->size()), half, half_context);
+        half_object = half_code ? generate_code(**half_code, optimization) : half_code.error();
+      });
+    Result<std::unique_ptr<llvm::MemoryBuffer>> object = generate_code(**module, optimization);
+    if (half_thread.joinable()) half_thread.join();
+    if (!object) return object.error();
+    KernelObjects objects;
+    objects.push_back({module_name(name, part), std::move(*object)});
+    if (half_object) {
+      if (!*half_object) return half_object->error();
+      objects.push_back({half, std::move(**half_object)});
+    }
+    return objects;
+  }
+
+  // The module of the kernel's `part`, optimized with a target machine lent
+  // for the purpose.
+  Result<std::unique_ptr<llvm::Module>> optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
+                                                         const std::string& name, GatherStrategy gathers,
+                                                         Optimization optimization, KernelPart part,
+                                                         const KernelSplit& split) const {
     Result<LentMachine> machine = lend_machine(code_generation_level(optimization));
     if (!machine) return machine.error();
-    llvm::LLVMContext context;
-    Result<std::unique_ptr<llvm::Module>> module =
-        build_optimized_module(ir, width, context, name, gathers, **machine, optimization, part, split);
-    if (!module) return module.error();
+    return build_optimized_module(ir, width, context, name, gathers, **machine, optimization, part, split);
+  }
+
+  // The machine code of `module`, built on the calling thread.
+  Result<std::unique_ptr<llvm::MemoryBuffer>> generate_code(llvm::Module& module, Optimization optimization) const {
     // Instruction selection, scheduling and greedy register allocation grow
     // faster than the kernel: a 4000-instruction graph spent 2 s there. A
     // kernel this large is compiled with the fast, linear path instead
     // (slower code, a compile in a fraction of the time).
-    if ((*module)->getInstructionCount() > max_instructions_for_full_codegen) {
-      machine = lend_machine(llvm::CodeGenOptLevel::None);
-      if (!machine) return machine.error();
-    }
-    auto object = llvm::orc::SimpleCompiler(**machine)(**module);
+    const llvm::CodeGenOptLevel level = module.getInstructionCount() > max_instructions_for_full_codegen
+                                            ? llvm::CodeGenOptLevel::None
+                                            : code_generation_level(optimization);
+    Result<LentMachine> machine = lend_machine(level);
+    if (!machine) return machine.error();
+    auto object = llvm::orc::SimpleCompiler(**machine)(module);
     if (!object) return failure("JIT: " + error_text(object.takeError()));
     return std::move(*object);
   }
 
   Result<std::shared_ptr<const KernelCode>> add_objects(const std::string& name, int width, KernelObjects objects) {
     llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
-    for (std::unique_ptr<llvm::MemoryBuffer>& object : objects)
-      if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object))) {
+    for (KernelObject& object : objects)
+      if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object.code))) {
         llvm::consumeError(tracker->remove());
         return failure("JIT: " + error_text(std::move(error)));
       }
@@ -431,6 +497,19 @@ std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const 
   return *found;
 }
 
+namespace {
+
+// `module` as assembly for `machine`, or as LLVM IR.
+Result<std::string> listing_of(llvm::Module& module, Listing listing, llvm::TargetMachine& machine) {
+  if (listing == Listing::assembly) return assembly(module, machine);
+  std::string text;
+  llvm::raw_string_ostream stream(text);
+  module.print(stream, nullptr);
+  return text;
+}
+
+}  // namespace
+
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (width == 0) width = host_vector_width();
   Result<std::unique_ptr<llvm::TargetMachine>> machine =
@@ -451,14 +530,22 @@ Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing
         build_optimized_module(ir, width, context, "shade_kernel", effective_gathers(settings), **machine,
                                settings.optimization, part, split.value_or(KernelSplit{}));
     if (!module) return module.error();
-    if (listing == Listing::assembly) {
-      Result<std::string> code = assembly(**module, **machine);
-      if (!code) return code.error();
-      text += *code;
-      continue;
-    }
-    llvm::raw_string_ostream stream(text);
-    (*module)->print(stream, nullptr);
+    // A module whose code is generated in two halves, then its half.
+    const std::string half = half_name(module_name("shade_kernel", part));
+    std::optional<llvm::SmallVector<char, 0>> half_bitcode;
+    if (settings.optimization == Optimization::full) half_bitcode = split_off_half(**module, half);
+    Result<std::string> listed = listing_of(**module, listing, **machine);
+    if (!listed) return listed.error();
+    text += *listed;
+    if (!half_bitcode) continue;
+    llvm::LLVMContext half_context;
+    Result<std::unique_ptr<llvm::Module>> half_code =
+        half_module(llvm::StringRef(half_bitcode->data(), half_bitcode->size()), half, half_context);
+    if (!half_code) return half_code.error();
+    text += std::string(comment) + " the first half of its longest block, compiled on a thread of its own\n";
+    listed = listing_of(**half_code, listing, **machine);
+    if (!listed) return listed.error();
+    text += *listed;
   }
   return text;
 }

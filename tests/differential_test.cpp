@@ -327,6 +327,22 @@ TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
   EXPECT_EQ(listing->find("; module"), std::string::npos);
 }
 
+// The fireball's octave loop is one long block (a 4D noise, antialiased);
+// its first half is compiled apart and called from the loop, with what it
+// leaves passed through memory: the result is the interpreter's to the bit.
+TEST(SplitKernelDifferential, KernelsGeneratedInHalvesAgree) {
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/fireball.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  for (int width : {8, 16}) {
+    Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
+    ASSERT_TRUE(listing.ok()) << listing.error().to_string();
+    EXPECT_NE(listing->find("; the first half of its longest block"), std::string::npos)
+        << "width " << width << ": generated whole";
+    EXPECT_EQ(compare_backends("fireball", loaded->ir, loaded->params, width), "");
+    EXPECT_EQ(compare_backends("fireball", loaded->ir, loaded->params, width, GatherStrategy::hardware), "");
+  }
+}
+
 // --- random well-typed graphs ---------------------------------------------
 
 TEST(RandomGraphDifferential, HundredsOfRandomGraphsAgree) {
