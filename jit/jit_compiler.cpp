@@ -542,7 +542,7 @@ Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing
     Result<std::unique_ptr<llvm::Module>> half_code =
         half_module(llvm::StringRef(half_bitcode->data(), half_bitcode->size()), half, half_context);
     if (!half_code) return half_code.error();
-    text += std::string(comment) + " the first half of its longest block, compiled on a thread of its own\n";
+    text += std::string(comment) + " the half of this module compiled on a thread of its own\n";
     listed = listing_of(**half_code, listing, **machine);
     if (!listed) return listed.error();
     text += *listed;

@@ -1,23 +1,38 @@
 #include "jit/module_halves.h"
 
 #include <algorithm>
+#include <string>
+#include <cstdlib>
 #include <vector>
 
 #include <llvm/ADT/DenseMap.h>
+#include <llvm/ADT/SmallPtrSet.h>
+#include <llvm/Analysis/LoopInfo.h>
 #include <llvm/Bitcode/BitcodeReader.h>
 #include <llvm/Bitcode/BitcodeWriter.h>
 #include <llvm/IR/Constants.h>
+#include <llvm/IR/DataLayout.h>
+#include <llvm/IR/Dominators.h>
 #include <llvm/IR/Function.h>
 #include <llvm/IR/GlobalVariable.h>
 #include <llvm/IR/Instructions.h>
 #include <llvm/IR/Module.h>
 #include <llvm/Support/MemoryBufferRef.h>
 #include <llvm/Support/raw_ostream.h>
+#include <llvm/Transforms/Utils/Cloning.h>
 #include <llvm/Transforms/Utils/CodeExtractor.h>
+#include <llvm/Transforms/Utils/ValueMapper.h>
 
 namespace shadetree {
 
 namespace {
+
+// Instructions of the module's function definitions.
+unsigned instruction_count(const llvm::Module& module) {
+  unsigned count = 0;
+  for (const llvm::Function& function : module) count += function.getInstructionCount();
+  return count;
+}
 
 // The module's longest basic block.
 llvm::BasicBlock* longest_block(llvm::Module& module) {
@@ -28,11 +43,69 @@ llvm::BasicBlock* longest_block(llvm::Module& module) {
   return longest;
 }
 
-// Where to cut `block` (an index into its instructions after its PHIs):
-// within its middle third, where the fewest values of the first half are
-// still to be read, so that little goes out through memory. Nothing if the
-// block is too short.
-std::optional<std::size_t> cut_position(llvm::BasicBlock& block) {
+// Whether a region of `weight` instructions, moved out of a module of
+// `total`, leaves the two halves balanced enough to be worth a thread.
+bool balanced(unsigned weight, unsigned total) { return 10 * weight >= 3 * total && 10 * weight <= 7 * total; }
+
+// The blocks of a stretch of the function's outermost loop (the sample
+// loop, or a split kernel's chunk loop) that every iteration runs through
+// from its first block to its last, with the inner loops and conditional
+// blocks between: the first listed is its only entry. Of such stretches,
+// the one whose instructions come closest to `target`, within the
+// balance of `total`; nothing if none is.
+std::vector<llvm::BasicBlock*> loop_stretch(llvm::Function& function, unsigned target, unsigned total) {
+  llvm::DominatorTree dominators(function);
+  llvm::LoopInfo loops(dominators);
+  std::vector<llvm::BasicBlock*> best;
+  unsigned best_distance = 0;
+  for (llvm::Loop* loop : loops) {
+    llvm::BasicBlock* latch = loop->getLoopLatch();
+    if (!latch) continue;
+    // The spine: the loop's own blocks that dominate its latch, in the
+    // order an iteration runs them.
+    std::vector<llvm::BasicBlock*> spine;
+    for (llvm::BasicBlock* block : loop->blocks())
+      if (loops.getLoopFor(block) == loop && dominators.dominates(block, latch)) spine.push_back(block);
+    std::sort(spine.begin(), spine.end(), [&](llvm::BasicBlock* a, llvm::BasicBlock* b) {
+      return dominators.getNode(a)->getLevel() < dominators.getNode(b)->getLevel();
+    });
+    // Each block of the loop belongs to the last spine block dominating it.
+    std::vector<unsigned> weight(spine.size(), 0);
+    std::vector<std::vector<llvm::BasicBlock*>> owned(spine.size());
+    for (llvm::BasicBlock* block : loop->blocks())
+      for (std::size_t s = spine.size(); s-- > 0;)
+        if (dominators.dominates(spine[s], block)) {
+          weight[s] += static_cast<unsigned>(block->size());
+          owned[s].push_back(block);
+          break;
+        }
+    // Stretches from spine block i up to, not including, spine block j;
+    // never the header (the loop's PHIs) nor the latch (its exit branch).
+    for (std::size_t i = 1; i + 1 < spine.size(); ++i) {
+      unsigned stretch = 0;
+      for (std::size_t j = i + 1; j < spine.size(); ++j) {
+        stretch += weight[j - 1];
+        const unsigned distance = stretch > target ? stretch - target : target - stretch;
+        if (!balanced(stretch, total) || (!best.empty() && distance >= best_distance)) continue;
+        best.clear();
+        for (std::size_t s = i; s < j; ++s) {
+          std::vector<llvm::BasicBlock*> blocks = owned[s];
+          std::stable_partition(blocks.begin(), blocks.end(), [&](llvm::BasicBlock* b) { return b == spine[s]; });
+          best.insert(best.end(), blocks.begin(), blocks.end());
+        }
+        best_distance = distance;
+      }
+    }
+  }
+  return best;
+}
+
+// Where to cut `block` (an index into its instructions after its PHIs)
+// so that its first part holds about `target` instructions: within a
+// tenth of the block of it, where the fewest values of the first part are
+// still to be read, so that little goes out through memory. Nothing if
+// the block is too short.
+std::optional<std::size_t> cut_position(llvm::BasicBlock& block, unsigned target) {
   std::vector<llvm::Instruction*> body;
   llvm::DenseMap<const llvm::Instruction*, std::size_t> position;
   for (llvm::Instruction& instr : block)
@@ -42,6 +115,7 @@ std::optional<std::size_t> cut_position(llvm::BasicBlock& block) {
     }
   const std::size_t count = body.size();
   if (count < min_block_to_halve) return std::nullopt;
+  const std::size_t aim = std::clamp<std::size_t>(target, count / 3, 5 * count / 6);
   // The last reader of each value (count: after the block or its branch),
   // and how many values are last read at each position.
   std::vector<std::size_t> last_read(count);
@@ -59,7 +133,7 @@ std::optional<std::size_t> cut_position(llvm::BasicBlock& block) {
   int live = 0;  // values before position c read at c or later
   for (std::size_t c = 1; c < count; ++c) {
     live += (last_read[c - 1] >= c ? 1 : 0) - last_reads_at[c - 1];
-    if (3 * c < count || 3 * c > 2 * count) continue;
+    if (10 * (c > aim ? c - aim : aim - c) > count) continue;
     if (!best || live < best_live) {
       best = c;
       best_live = live;
@@ -68,12 +142,50 @@ std::optional<std::size_t> cut_position(llvm::BasicBlock& block) {
   return best;
 }
 
-// Whether the half may be compiled apart: every global it can reach is a
-// constant, so the copy in each module reads the same.
-bool reads_only_constants(const llvm::Module& module) {
-  for (const llvm::GlobalVariable& global : module.globals())
-    if (!global.isConstant()) return false;
-  return true;
+// The first part of the module's longest block, cut off as a block of its
+// own, to hold about `target` instructions; nothing if it is too short.
+std::vector<llvm::BasicBlock*> block_part(llvm::Module& module, unsigned target) {
+  llvm::BasicBlock* block = longest_block(module);
+  if (!block) return {};
+  const std::optional<std::size_t> cut = cut_position(*block, target);
+  if (!cut) return {};
+  llvm::Instruction* first = block->getFirstNonPHI();
+  llvm::Instruction* after = first;
+  for (std::size_t i = 0; i < *cut; ++i) after = after->getNextNode();
+  // Should the part not be extracted after all, the code generator merges
+  // the blocks again.
+  llvm::BasicBlock* part = block->splitBasicBlock(first, "half");
+  part->splitBasicBlock(after, "after_half");
+  return {part};
+}
+
+// `function` and the functions and globals it uses, directly or through
+// the functions it calls.
+llvm::SmallPtrSet<const llvm::GlobalValue*, 16> used_by(const llvm::Function& function) {
+  llvm::SmallPtrSet<const llvm::GlobalValue*, 16> used{&function};
+  llvm::SmallPtrSet<const llvm::Constant*, 32> seen;
+  std::vector<const llvm::Value*> pending;
+  for (const llvm::Function* next = &function; next;) {
+    for (const llvm::BasicBlock& block : *next)
+      for (const llvm::Instruction& instr : block)
+        for (const llvm::Value* operand : instr.operands()) pending.push_back(operand);
+    next = nullptr;
+    while (!pending.empty() && !next) {
+      const auto* constant = llvm::dyn_cast<llvm::Constant>(pending.back());
+      pending.pop_back();
+      if (!constant || !seen.insert(constant).second) continue;
+      if (const auto* global = llvm::dyn_cast<llvm::GlobalValue>(constant)) {
+        used.insert(global);
+        if (const auto* callee = llvm::dyn_cast<llvm::Function>(global); callee && !callee->isDeclaration())
+          next = callee;
+        else if (const auto* variable = llvm::dyn_cast<llvm::GlobalVariable>(global); variable && variable->hasInitializer())
+          pending.push_back(variable->getInitializer());
+        continue;
+      }
+      for (const llvm::Value* operand : constant->operands()) pending.push_back(operand);
+    }
+  }
+  return used;
 }
 
 // Removes what nothing in `module` uses any more: functions and globals
@@ -94,30 +206,42 @@ void drop_unused(llvm::Module& module) {
 }  // namespace
 
 std::optional<llvm::SmallVector<char, 0>> split_off_half(llvm::Module& module, const std::string& half_name) {
-  if (!reads_only_constants(module)) return std::nullopt;
-  llvm::BasicBlock* block = longest_block(module);
-  if (!block) return std::nullopt;
-  const std::optional<std::size_t> cut = cut_position(*block);
-  if (!cut) return std::nullopt;
-  llvm::Instruction* first = block->getFirstNonPHI();
-  llvm::Instruction* after = first;
-  for (std::size_t i = 0; i < *cut; ++i) after = after->getNextNode();
-  // Split blocks that end up not extracted are merged again by the code
-  // generator.
-  llvm::BasicBlock* half = block->splitBasicBlock(first, "half");
-  half->splitBasicBlock(after, "after_half");
-  llvm::Function& function = *block->getParent();
+  const unsigned total = instruction_count(module);
+  if (total < min_instructions_to_halve) return std::nullopt;
+  llvm::Function* largest = nullptr;
+  for (llvm::Function& function : module)
+    if (!largest || function.getInstructionCount() > largest->getInstructionCount()) largest = &function;
+  std::vector<llvm::BasicBlock*> region = loop_stretch(*largest, total / 2, total);
+  if (region.empty()) region = block_part(module, total / 2);
+  if (region.empty()) return std::nullopt;
+  llvm::Function& function = *region.front()->getParent();
   const llvm::CodeExtractorAnalysisCache analyses(function);
-  const llvm::SmallVector<llvm::BasicBlock*, 1> region{half};
   llvm::CodeExtractor extractor(region);
   if (!extractor.isEligible()) return std::nullopt;
   llvm::Function* extracted = extractor.extractCodeRegion(analyses);
   if (!extracted) return std::nullopt;
   extracted->setName(half_name);
   extracted->setLinkage(llvm::GlobalValue::ExternalLinkage);
+  // The half's module: the half, the functions it calls and the tables it
+  // reads, copied (their addresses fold into its instructions). Large data
+  // (a graph's image or mesh) stays in `module` alone, exported under a
+  // name of the half's, and links to the half.
+  const llvm::SmallPtrSet<const llvm::GlobalValue*, 16> used = used_by(*extracted);
+  const llvm::DataLayout& layout = module.getDataLayout();
+  int exported = 0;
+  for (llvm::GlobalVariable& global : module.globals())
+    if (used.contains(&global) && layout.getTypeAllocSize(global.getValueType()) > max_copied_data_bytes) {
+      global.setName(half_name + ".data" + std::to_string(exported++));
+      global.setLinkage(llvm::GlobalValue::ExternalLinkage);
+    }
+  llvm::ValueToValueMapTy copies;
+  std::unique_ptr<llvm::Module> half = llvm::CloneModule(module, copies, [&](const llvm::GlobalValue* value) {
+    return value == extracted || (used.contains(value) && value->hasLocalLinkage());
+  });
+  drop_unused(*half);
   llvm::SmallVector<char, 0> bitcode;
   llvm::raw_svector_ostream stream(bitcode);
-  llvm::WriteBitcodeToFile(module, stream);
+  llvm::WriteBitcodeToFile(*half, stream);
   extracted->deleteBody();
   drop_unused(module);
   return bitcode;
@@ -132,11 +256,6 @@ Result<std::unique_ptr<llvm::Module>> half_module(llvm::StringRef bitcode, const
     llvm::handleAllErrors(module.takeError(), [&](const llvm::ErrorInfoBase& info) { text = info.message(); });
     return failure("JIT: the kernel's second half: " + text);
   }
-  // Everything but the half is kept only where the half calls it.
-  for (llvm::Function& function : **module)
-    if (!function.isDeclaration() && function.getName() != half_name)
-      function.setLinkage(llvm::GlobalValue::InternalLinkage);
-  drop_unused(**module);
   return std::move(*module);
 }
 

@@ -327,19 +327,24 @@ TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
   EXPECT_EQ(listing->find("; module"), std::string::npos);
 }
 
-// The fireball's octave loop is one long block (a 4D noise, antialiased);
-// its first half is compiled apart and called from the loop, with what it
-// leaves passed through memory: the result is the interpreter's to the bit.
+// Half of each of these kernels is compiled apart and called, with the
+// values it leaves passed through memory: of the fireball, the first part
+// of its octave loop's one long block (a 4D noise, antialiased); of
+// eroded_cube, its first octave loop; of mesh_hypertexture, a stretch of
+// its mesh distance, reading the mesh from the other module. The result is
+// the interpreter's to the bit.
 TEST(SplitKernelDifferential, KernelsGeneratedInHalvesAgree) {
-  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/fireball.json");
-  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
-  for (int width : {8, 16}) {
-    Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
-    ASSERT_TRUE(listing.ok()) << listing.error().to_string();
-    EXPECT_NE(listing->find("; the first half of its longest block"), std::string::npos)
-        << "width " << width << ": generated whole";
-    EXPECT_EQ(compare_backends("fireball", loaded->ir, loaded->params, width), "");
-    EXPECT_EQ(compare_backends("fireball", loaded->ir, loaded->params, width, GatherStrategy::hardware), "");
+  for (const char* name : {"fireball", "eroded_cube", "mesh_hypertexture"}) {
+    Result<LoadedGraph> loaded = testing::load_gallery_graph(std::string(SHADETREE_SOURCE_DIR "/graphs/") + name + ".json");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    for (int width : {8, 16}) {
+      Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
+      ASSERT_TRUE(listing.ok()) << listing.error().to_string();
+      EXPECT_NE(listing->find("; the half of this module compiled on a thread of its own"), std::string::npos)
+          << name << " at width " << width << ": generated whole";
+      EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width), "");
+      EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width, GatherStrategy::hardware), "");
+    }
   }
 }
 
