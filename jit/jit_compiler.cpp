@@ -20,9 +20,11 @@
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 #include <llvm/IR/Module.h>
 #include <llvm/Object/ObjectFile.h>
+#include <llvm/Support/CommandLine.h>
 #include <llvm/Support/ErrorHandling.h>
 #include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
+#include <llvm/Support/raw_ostream.h>
 #include <llvm/Support/xxhash.h>
 #include <llvm/Target/TargetMachine.h>
 
@@ -268,6 +270,13 @@ class Jit {
     llvm::InitializeNativeTarget();
     llvm::InitializeNativeTargetAsmPrinter();
     llvm::InitializeNativeTargetAsmParser();
+    // The list scheduler after register allocation orders instructions for
+    // in-order pipelines; on the out-of-order x86 cores it is enabled for
+    // (AMD's Zen among them) it changed no kernel's speed and cost a tenth
+    // of code generation (docs/architecture.md). LLVM reads it from its
+    // options only; should they refuse it, it stays on.
+    const char* options[] = {"shadetree", "-post-RA-scheduler=false"};
+    llvm::cl::ParseCommandLineOptions(2, options, "", &llvm::nulls());
     auto machine_builder = llvm::orc::JITTargetMachineBuilder::detectHost();
     if (!machine_builder) {
       startup_error_ = error_text(machine_builder.takeError());
@@ -346,6 +355,13 @@ class Jit {
     llvm::LLVMContext context;
     Result<std::unique_ptr<llvm::Module>> module = optimized_module(ir, width, context, name, gathers, optimization, part, split);
     if (!module) return module.error();
+    // Instruction selection, scheduling and greedy register allocation grow
+    // faster than the kernel: a 4000-instruction graph spent 2 s there. A
+    // kernel this large is compiled with the fast, linear path instead
+    // (slower code, a compile in a fraction of the time), both its halves.
+    const llvm::CodeGenOptLevel level = (*module)->getInstructionCount() > max_instructions_for_full_codegen
+                                            ? llvm::CodeGenOptLevel::None
+                                            : code_generation_level(optimization);
     std::optional<llvm::SmallVector<char, 0>> half_bitcode;
     if (optimization == Optimization::full) half_bitcode = split_off_half(**module, half);
     std::optional<Result<std::unique_ptr<llvm::MemoryBuffer>>> half_object;
@@ -355,9 +371,9 @@ class Jit {
         llvm::LLVMContext half_context;
         Result<std::unique_ptr<llvm::Module>> half_code =
             half_module(llvm::StringRef(half_bitcode->data(), half_bitcode->size()), half, half_context);
-        half_object = half_code ? generate_code(**half_code, optimization) : half_code.error();
+        half_object = half_code ? generate_code(**half_code, level) : half_code.error();
       });
-    Result<std::unique_ptr<llvm::MemoryBuffer>> object = generate_code(**module, optimization);
+    Result<std::unique_ptr<llvm::MemoryBuffer>> object = generate_code(**module, level);
     if (half_thread.joinable()) half_thread.join();
     if (!object) return object.error();
     KernelObjects objects;
@@ -381,20 +397,14 @@ class Jit {
   }
 
   // The machine code of `module`, built on the calling thread.
-  Result<std::unique_ptr<llvm::MemoryBuffer>> generate_code(llvm::Module& module, Optimization optimization) const {
-    // Instruction selection, scheduling and greedy register allocation grow
-    // faster than the kernel: a 4000-instruction graph spent 2 s there. A
-    // kernel this large is compiled with the fast, linear path instead
-    // (slower code, a compile in a fraction of the time).
-    const llvm::CodeGenOptLevel level = module.getInstructionCount() > max_instructions_for_full_codegen
-                                            ? llvm::CodeGenOptLevel::None
-                                            : code_generation_level(optimization);
+  Result<std::unique_ptr<llvm::MemoryBuffer>> generate_code(llvm::Module& module, llvm::CodeGenOptLevel level) const {
     Result<LentMachine> machine = lend_machine(level);
     if (!machine) return machine.error();
     auto object = llvm::orc::SimpleCompiler(**machine)(module);
     if (!object) return failure("JIT: " + error_text(object.takeError()));
     return std::move(*object);
   }
+
 
   Result<std::shared_ptr<const KernelCode>> add_objects(const std::string& name, int width, KernelObjects objects) {
     llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
