@@ -128,16 +128,20 @@ F grid_distance(const float* grid, const Vec3<F>& p) {
 
 // The closest point of the grid's surface to p: p - d grad d / |grad d|,
 // the gradient by central differences a voxel apart (p itself where the
-// gradient vanishes).
+// gradient vanishes). The six probes are one loop, so that a kernel holds
+// one copy of the grid's lookup for them, not six: its compile is a
+// third of what it was (docs/architecture.md).
 template <class F>
 Vec3<F> grid_closest(const float* grid, const Vec3<F>& p) {
   const float h = grid[3];
   F d = grid_distance(grid, p);
-  auto difference = [&](float dx, float dy, float dz) {
-    return grid_distance(grid, Vec3<F>{p.x + dx, p.y + dy, p.z + dz}) -
-           grid_distance(grid, Vec3<F>{p.x - dx, p.y - dy, p.z - dz});
-  };
-  Vec3<F> gradient{difference(h, 0, 0), difference(0, h, 0), difference(0, 0, h)};
+  F probe[6];  // +x, -x, +y, -y, +z, -z
+  for (int i = 0; i < 6; ++i) {
+    const float dx = i / 2 == 0 ? h : 0.0f, dy = i / 2 == 1 ? h : 0.0f, dz = i / 2 == 2 ? h : 0.0f;
+    probe[i] = grid_distance(grid, i % 2 == 0 ? Vec3<F>{p.x + dx, p.y + dy, p.z + dz}
+                                              : Vec3<F>{p.x - dx, p.y - dy, p.z - dz});
+  }
+  Vec3<F> gradient{probe[0] - probe[1], probe[2] - probe[3], probe[4] - probe[5]};
   Vec3<F> zero{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
   Vec3<F> n = direction_or(gradient, zero);
   return {p.x - d * n.x, p.y - d * n.y, p.z - d * n.z};
