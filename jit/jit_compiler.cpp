@@ -347,8 +347,8 @@ class Jit {
   }
 
   // The object files of the kernel's module `part`, built on the calling
-  // thread; a module whose longest block is long enough has the first half
-  // of that block compiled on a thread of its own (jit/module_halves.h).
+  // thread; a large enough module has about half of it compiled on a
+  // thread of its own (jit/module_halves.h).
   Result<KernelObjects> compile_module(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
                                        Optimization optimization, KernelPart part, const KernelSplit& split) const {
     const std::string half = half_name(module_name(name, part));
@@ -404,7 +404,6 @@ class Jit {
     if (!object) return failure("JIT: " + error_text(object.takeError()));
     return std::move(*object);
   }
-
 
   Result<std::shared_ptr<const KernelCode>> add_objects(const std::string& name, int width, KernelObjects objects) {
     llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <string>
-#include <cstdlib>
 #include <vector>
 
 #include <llvm/ADT/DenseMap.h>
