@@ -52,6 +52,10 @@ struct MarchingRay {
   glm::vec3 color{0.0f};
   float alpha = 0.0f;
   std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
+  // Each light as the ray's samples see it: a directional light's is the
+  // ray's own, set where the ray starts or bends; a point light's is set
+  // at each shaded sample.
+  LightSeen* lights_seen = nullptr;
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
 
   float segment_start(int k) const { return entry + static_cast<float>(k) * step_length; }
@@ -247,6 +251,11 @@ class Marcher {
         marching.segment = probes_gradients() ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
+    std::vector<LightSeen> lights_seen(rays.size() * lights);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      rays[i].lights_seen = lights_seen.data() + i * lights;
+      see_lights_along(rays[i]);
+    }
     if (rays.empty() && objects.empty()) return;
     // Objects are shaded in batches of the packet size too; there are at
     // most as many as the rays and the pixels without volume.
@@ -407,6 +416,13 @@ class Marcher {
     }
   }
 
+  // The lights as every sample of `ray` sees them, where they are
+  // directional (a point light's are the sample's own).
+  void see_lights_along(MarchingRay& ray) const {
+    for (std::size_t l = 0; l < scene_.lights().size(); ++l)
+      ray.lights_seen[l] = light_seen(scene_.lights()[l], ray.origin, -ray.frame.along);
+  }
+
   // Gradients serve the lighting and the refraction.
   bool needs_gradients() const { return lit_ || refracts_; }
   // From the previous sample and two probes, which needs a sample before
@@ -437,6 +453,7 @@ class Marcher {
     ray.origin = origin;
     ray.occupied_until = -std::numeric_limits<float>::infinity();
     ray.frame = ray_frame(bent / length);
+    see_lights_along(ray);
     ray.entry = 0.0f;
     ray.backdrop = first_object(Ray{origin, bent / length}, 0.0f);
     ray.exit = std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f);
@@ -460,9 +477,15 @@ class Marcher {
 
   float opacity(const Batch& batch, std::size_t i) const { return sample_opacity(layout_, batch, i); }
 
-  // 1989: alpha_k = 1 - (1 - opacity)^(length / reference step).
+  // 1989: alpha_k = 1 - (1 - opacity)^(length / reference step). A whole
+  // segment at the reference step (every segment of a march at the
+  // graph's own step, but the last) raises to the power 1, which leaves
+  // the base as it is: std::pow returns it unchanged for every float in
+  // [0, 1] (checked one by one), so it is not called.
   float segment_alpha(float opacity, float length) const {
-    return opacity >= 1.0f ? 1.0f : 1.0f - std::pow(1.0f - opacity, length / reference_step_);
+    if (opacity >= 1.0f) return 1.0f;
+    const float exponent = length / reference_step_;
+    return 1.0f - (exponent == 1.0f ? 1.0f - opacity : std::pow(1.0f - opacity, exponent));
   }
 
   // Gilet & Dischler 2010's "Phong with shadows": from each shaded sample a
@@ -656,8 +679,12 @@ class Marcher {
           point.shading_normal = normals[i];
           point.geometric_normal = normals[i];
           point.to_viewer = -ray.frame.along;
+          for (std::size_t l = 0; l < scene_.lights().size(); ++l)
+            if (scene_.lights()[l].type != LightType::directional)
+              ray.lights_seen[l] = light_seen(scene_.lights()[l], point.point, point.to_viewer);
           // Objects cast shadows into the volume too (shadows_ tests them).
-          color = light_point(scene_, material, point, shadows_, transmittance.data() + i * scene_.lights().size());
+          color = light_point(scene_, material, point, shadows_, transmittance.data() + i * scene_.lights().size(),
+                              ray.lights_seen);
         }
         // Front to back: t = alpha_k (1 - alpha); color += t color_k.
         const float alpha = segment_alpha(sample_opacity, ray.segment_length());

@@ -23,30 +23,38 @@ glm::vec3 direction_to_light(const Light& light, const glm::vec3& point, float* 
   return *distance > 0.0f ? offset / *distance : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
+LightSeen light_seen(const Light& light, const glm::vec3& point, const glm::vec3& to_viewer) {
+  LightSeen seen;
+  seen.toward = direction_to_light(light, point, &seen.distance);
+  seen.half = glm::normalize(seen.toward + to_viewer);
+  return seen;
+}
+
 glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
-                      const float* light_transmittance) {
+                      const float* light_transmittance, const LightSeen* seen) {
   glm::vec3 result = glm::vec3(scene.desc().ambient[0], scene.desc().ambient[1], scene.desc().ambient[2]) *
                          material.color +
                      material.emission;
   const glm::vec3& n = point.shading_normal;
   const float exponent = specular_exponent(material.roughness);
-  // Shadow rays start off the surface by an amount that scales with the
-  // point's distance from the origin (float spacing grows with it).
-  const float offset = 1e-4f * (1.0f + glm::length(point.point));
+  const bool objects_shadow = shadows && !scene.objects().empty();
   for (std::size_t index = 0; index < scene.lights().size(); ++index) {
     const Light& light = scene.lights()[index];
-    float distance = 0.0f;
-    const glm::vec3 l = direction_to_light(light, point.point, &distance);
+    const LightSeen here = seen ? seen[index] : light_seen(light, point.point, point.to_viewer);
+    const glm::vec3& l = here.toward;
     const float diffuse = glm::dot(n, l);
     // A light behind the geometric surface cannot reach it, whatever the
     // perturbed normal says.
     if (diffuse <= 0.0f || glm::dot(point.geometric_normal, l) <= 0.0f) continue;
-    if (shadows && scene.occluded(Ray{point.point + offset * point.geometric_normal, l}, 0.0f, distance)) continue;
+    // Shadow rays start off the surface by an amount that scales with the
+    // point's distance from the origin (float spacing grows with it).
+    if (objects_shadow &&
+        scene.occluded(Ray{point.point + 1e-4f * (1.0f + glm::length(point.point)) * point.geometric_normal, l}, 0.0f,
+                       here.distance))
+      continue;
     glm::vec3 term = material.color * diffuse;
-    if (material.specular != 0.0f) {
-      const glm::vec3 half = glm::normalize(l + point.to_viewer);
-      term += material.specular * std::pow(std::max(0.0f, glm::dot(n, half)), exponent);
-    }
+    if (material.specular != 0.0f)
+      term += material.specular * std::pow(std::max(0.0f, glm::dot(n, here.half)), exponent);
     result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * term;
   }
   return result;

@@ -26,6 +26,19 @@ struct LitPoint {
   glm::vec3 to_viewer{0.0f};         // world, unit
 };
 
+// A light as a point sees it: the unit direction toward it, its distance
+// (infinite for a directional light) and the Blinn-Phong half vector
+// between it and the viewer. A directional light seen along one view
+// direction looks the same from every point, so the samples of a volume
+// ray share one.
+struct LightSeen {
+  glm::vec3 toward{0.0f};
+  float distance = 0.0f;
+  glm::vec3 half{0.0f};
+};
+
+LightSeen light_seen(const Light& light, const glm::vec3& point, const glm::vec3& to_viewer);
+
 // Blinn-Phong exponent of a roughness in [0, 1] (2 / r^2 - 2, the
 // exponent whose lobe matches a Beckmann distribution of slope r).
 float specular_exponent(float roughness);
@@ -34,9 +47,10 @@ float specular_exponent(float roughness);
 // radiance * (color * max(0, N.L) + specular * max(0, N.H)^exponent),
 // each light's term dropped where a shadow ray finds an object first, and
 // multiplied by light_transmittance[i] where given (the fraction of light
-// i that reaches the point through a volume).
+// i that reaches the point through a volume). `seen` holds each light as
+// the point sees it, where the caller has it (light_seen).
 glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
-                      const float* light_transmittance = nullptr);
+                      const float* light_transmittance = nullptr, const LightSeen* seen = nullptr);
 
 // Unit direction from `point` toward `light`, and the distance to it
 // (infinite for directional lights).
