@@ -39,8 +39,11 @@ constexpr float shadow_weight_cutoff = 1.0f / 64.0f;
 // own length, so a constant density gives exactly the transmittance of
 // the box's thickness whatever the step (1989: opacity is "a function of
 // both density and step-size").
+//
+// Every step reads and writes the fields up to `lights_seen` of every live
+// ray, so they come first, in the first two cache lines; a packet of
+// rays is larger than the first-level cache.
 struct MarchingRay {
-  int pixel = 0;  // in the tile
   glm::vec3 origin{0.0f};
   RayFrame frame;  // its unit direction and two perpendiculars
   float entry = 0.0f, exit = 0.0f;
@@ -48,15 +51,17 @@ struct MarchingRay {
   float jitter = 0.5f;
   int segment = 0;  // the next one; -1: the probe before the entry, for the first gradient
   float previous_t = 0.0f, previous_density = 0.0f;
-  float ior = 1.0f;  // the refractive index the ray is travelling through
   glm::vec3 color{0.0f};
   float alpha = 0.0f;
-  std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
-  // Each light as the ray's samples see it: a directional light's is the
-  // ray's own, set where the ray starts or bends; a point light's is set
-  // at each shaded sample.
-  LightSeen* lights_seen = nullptr;
   float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
+  // Each light as the ray's samples see it: a directional light's is the
+  // ray's own, set at its first shaded sample and again after it bends; a
+  // point light's is set at each shaded sample.
+  LightSeen* lights_seen = nullptr;
+  bool sees_lights = false;  // lights_seen holds the directional lights along `frame`
+  float ior = 1.0f;  // the refractive index the ray is travelling through
+  int pixel = 0;  // in the tile
+  std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
 
   float segment_start(int k) const { return entry + static_cast<float>(k) * step_length; }
   float segment_length(int k) const { return std::min(step_length, exit - segment_start(k)); }
@@ -85,10 +90,23 @@ struct MarchingRay {
   glm::vec3 at(float t) const { return origin + t * frame.along; }
 };
 
-void store3(SampleBuffers& buffers, GlobalId id, std::size_t i, const glm::vec3& value) {
-  if (!buffers.has(id)) return;
-  for (int c = 0; c < 3; ++c) buffers.plane(id, c)[i] = value[c];
-}
+// The three planes of a vector global in a batch's inputs, looked up once
+// for a loop over its samples (none where the kernel does not read it).
+class Planes3 {
+ public:
+  Planes3(SampleBuffers& buffers, GlobalId id) {
+    if (buffers.has(id))
+      for (int c = 0; c < 3; ++c) planes_[c] = buffers.plane(id, c);
+  }
+  void store(std::size_t i, const glm::vec3& value) const {
+    if (!planes_[0]) return;
+    for (int c = 0; c < 3; ++c) planes_[c][i] = value[c];
+  }
+
+ private:
+  float* planes_[3] = {nullptr, nullptr, nullptr};
+};
+
 
 // The planes of one batch of samples and their outputs, with the planes
 // that are the same for every sample filled once.
@@ -101,11 +119,13 @@ struct Batch {
   OutputBuffers outputs;
 };
 
-// The graph's opacity (default: its density), in [0, 1].
-float sample_opacity(const OutputLayout& layout, const Batch& batch, std::size_t i) {
+// The plane of the graph's opacity (default: its density) in a batch's
+// outputs, and a sample's opacity in [0, 1] from it.
+const float* opacity_plane(const OutputLayout& layout, const Batch& batch) {
   const OutputId id = layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density;
-  return std::clamp(batch.outputs.plane(layout.plane(id))[i], 0.0f, 1.0f);
+  return batch.outputs.plane(layout.plane(id));
 }
+float unit_opacity(float opacity) { return std::clamp(opacity, 0.0f, 1.0f); }
 
 // The vector lanes a kernel call on `count` samples occupies, `width` at a
 // time (0: not counted).
@@ -166,6 +186,20 @@ struct ObjectSample {
 // The furry volumes march 25% more shadow samples for it than from 1.4.
 constexpr float marched_spacings_before_lookups = 6.0f;
 
+// What one step of the march knows of each live ray's sample, gathered
+// once for every stage of the step (kept from step to step, so that no
+// step allocates): where it lies, what the kernel found there, its normal
+// and what reaches it of each light.
+struct StepSamples {
+  std::vector<float> t;
+  std::vector<glm::vec3> at, normal;
+  std::vector<float> density, opacity;  // opacity in [0, 1]
+  std::vector<std::size_t> soft;        // the samples lit by their normal
+  std::vector<float> transmittance;     // lights per sample
+  std::vector<ShadowRay> shadow_rays;
+  std::vector<char> done;  // the ray leaves the march after this step
+};
+
 // What one tile's march works in: the batches of its kernel calls (march
 // samples, gradient probes, shadow samples), its kernel binding and its
 // statistics.
@@ -179,6 +213,7 @@ struct TileScratch {
         normal_bound(normal_bound),
         kernel_ns(kernel_ns) {}
   Batch samples, probes, shadows;
+  StepSamples step;
   BoundKernel& bound;
   BoundKernel* normal_bound;  // of VolumeRenderOptions::normal_kernel, where there is one
   std::atomic<long long>& kernel_ns;
@@ -252,10 +287,7 @@ class Marcher {
       }
     counts.rays += static_cast<long>(rays.size());
     std::vector<LightSeen> lights_seen(rays.size() * lights);
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      rays[i].lights_seen = lights_seen.data() + i * lights;
-      see_lights_along(rays[i]);
-    }
+    for (std::size_t i = 0; i < rays.size(); ++i) rays[i].lights_seen = lights_seen.data() + i * lights;
     if (rays.empty() && objects.empty()) return;
     // Objects are shaded in batches of the packet size too; there are at
     // most as many as the rays and the pixels without volume.
@@ -416,11 +448,15 @@ class Marcher {
     }
   }
 
-  // The lights as every sample of `ray` sees them, where they are
-  // directional (a point light's are the sample's own).
-  void see_lights_along(MarchingRay& ray) const {
+  // The lights as `ray`'s sample at `point` sees them: the directional
+  // ones as every sample of the ray does, the point lights as this one.
+  const LightSeen* lights_seen_from(MarchingRay& ray, const glm::vec3& point) const {
+    const glm::vec3 to_viewer = -ray.frame.along;
     for (std::size_t l = 0; l < scene_.lights().size(); ++l)
-      ray.lights_seen[l] = light_seen(scene_.lights()[l], ray.origin, -ray.frame.along);
+      if (!ray.sees_lights || scene_.lights()[l].type != LightType::directional)
+        ray.lights_seen[l] = light_seen(scene_.lights()[l], point, to_viewer);
+    ray.sees_lights = true;
+    return ray.lights_seen;
   }
 
   // Gradients serve the lighting and the refraction.
@@ -453,7 +489,7 @@ class Marcher {
     ray.origin = origin;
     ray.occupied_until = -std::numeric_limits<float>::infinity();
     ray.frame = ray_frame(bent / length);
-    see_lights_along(ray);
+    ray.sees_lights = false;
     ray.entry = 0.0f;
     ray.backdrop = first_object(Ray{origin, bent / length}, 0.0f);
     ray.exit = std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f);
@@ -474,8 +510,6 @@ class Marcher {
   float output(const Batch& batch, OutputId id, std::size_t i) const {
     return batch.outputs.plane(layout_.plane(id))[i];
   }
-
-  float opacity(const Batch& batch, std::size_t i) const { return sample_opacity(layout_, batch, i); }
 
   // 1989: alpha_k = 1 - (1 - opacity)^(length / reference step). A whole
   // segment at the reference step (every segment of a march at the
@@ -513,16 +547,18 @@ class Marcher {
                  live.end());
       if (live.empty()) break;
       const std::size_t count = live.size();
+      const Planes3 points(scratch.shadows.inputs, GlobalId::P), views(scratch.shadows.inputs, GlobalId::I);
       for (std::size_t i = 0; i < count; ++i) {
         const ShadowRay& ray = *live[i];
-        store3(scratch.shadows.inputs, GlobalId::P, i, ray.origin + ray.sample_t(shadow_step) * ray.direction);
-        store3(scratch.shadows.inputs, GlobalId::I, i, ray.direction);
+        points.store(i, ray.origin + ray.sample_t(shadow_step) * ray.direction);
+        views.store(i, ray.direction);
       }
       run(scratch.shadows, count, scratch);
       scratch.counts.shadow_samples += static_cast<long>(count);
+      const float* opacities = opacity_plane(layout_, scratch.shadows);
       for (std::size_t i = 0; i < count; ++i) {
         ShadowRay& ray = *live[i];
-        ray.transmittance *= 1.0f - segment_alpha(opacity(scratch.shadows, i), std::min(shadow_step, ray.end - ray.t));
+        ray.transmittance *= 1.0f - segment_alpha(unit_opacity(opacities[i]), std::min(shadow_step, ray.end - ray.t));
         ray.t += shadow_step;
         --ray.segments_left;
       }
@@ -537,88 +573,92 @@ class Marcher {
   }
 
   // The transmittance toward each light of the samples of this step that
-  // will be shaded (lights() per sample, 1 where not shadowed). Shadow rays
-  // start two reference steps out along the normal, clear of the sample
-  // itself, by a distance that does not change with the march step.
-  std::vector<float> light_transmittance(const std::vector<MarchingRay*>& live, const std::vector<glm::vec3>& normals,
-                                         TileScratch& scratch) const {
+  // will be shaded (lights() per sample, 1 where not shadowed), in
+  // step.transmittance. Shadow rays start two reference steps out along
+  // the normal, clear of the sample itself, by a distance that does not
+  // change with the march step.
+  void light_transmittance(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+    StepSamples& step = scratch.step;
     const std::size_t lights = scene_.lights().size();
-    std::vector<float> transmittance(live.size() * lights, 1.0f);
-    if (!shadows_) return transmittance;
-    std::vector<ShadowRay> rays;
+    step.transmittance.assign(live.size() * lights, 1.0f);
+    if (!shadows_) return;
+    step.shadow_rays.clear();
     for (std::size_t i = 0; i < live.size(); ++i) {
-      const MarchingRay& ray = *live[i];
-      if (ray.segment < 0) continue;
       // A faint sample (its opacity per reference step, times what the ray
       // still lets through) is lit unshadowed: in a faint medium (glass,
       // thin smoke) every sample would otherwise send rays through all of
       // it. Per reference step, so that the choice does not follow the step.
-      if (opacity(scratch.samples, i) * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
-      shadow_from(ray.at(ray.sample_t()), normals[i], 2.0f * reference_step_, std::sqrt(2.0f), i * lights,
-                  transmittance, rays, scratch.counts);
+      // (What a ray lets through is at most 1, so a faint opacity alone
+      // tells, without reading the ray.)
+      if (step.opacity[i] < shadow_weight_cutoff) continue;
+      const MarchingRay& ray = *live[i];
+      if (ray.segment < 0 || step.opacity[i] * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
+      shadow_from(step.at[i], step.normal[i], 2.0f * reference_step_, std::sqrt(2.0f), i * lights,
+                  step.transmittance, step.shadow_rays, scratch.counts);
     }
-    march_shadows(rays, transmittance, scratch);
-    return transmittance;
+    march_shadows(step.shadow_rays, step.transmittance, scratch);
   }
 
-  // normals[soft[k]] = the unit normal output of `batch`, run by a kernel
-  // of `layout`, at sample at(k), where it has a direction.
+  // step.normal[step.soft[k]] = the unit normal output of `batch`, run by
+  // a kernel of `layout`, at sample at(k), where it has a direction.
   template <class At>
-  void take_normals(const Batch& batch, const OutputLayout& layout, const std::vector<std::size_t>& soft, At at,
-                    std::vector<glm::vec3>& normals) const {
-    for (std::size_t k = 0; k < soft.size(); ++k) {
+  void take_normals(const Batch& batch, const OutputLayout& layout, At at, StepSamples& step) const {
+    const float* planes[3];
+    for (int c = 0; c < 3; ++c) planes[c] = batch.outputs.plane(layout.plane(OutputId::normal, c));
+    for (std::size_t k = 0; k < step.soft.size(); ++k) {
       glm::vec3 normal;
-      for (int c = 0; c < 3; ++c) normal[c] = batch.outputs.plane(layout.plane(OutputId::normal, c))[at(k)];
+      for (int c = 0; c < 3; ++c) normal[c] = planes[c][at(k)];
       const float length = glm::length(normal);
-      if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = normal / length;
+      if (length > 0.0f && std::isfinite(length)) step.normal[step.soft[k]] = normal / length;
     }
   }
 
   // The density's exact gradient (graph/derived_normals.h): one sample of
   // the normal kernel per soft sample.
-  void exact_normals(const std::vector<MarchingRay*>& live, const std::vector<std::size_t>& soft,
-                     std::vector<glm::vec3>& normals, TileScratch& scratch) const {
-    if (soft.empty()) return;
+  void exact_normals(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+    StepSamples& step = scratch.step;
+    if (step.soft.empty()) return;
     Batch& batch = scratch.probes;
-    for (std::size_t k = 0; k < soft.size(); ++k) {
-      const MarchingRay& ray = *live[soft[k]];
-      store3(batch.inputs, GlobalId::P, k, ray.at(ray.sample_t()));
-      store3(batch.inputs, GlobalId::I, k, ray.frame.along);
+    const Planes3 points(batch.inputs, GlobalId::P), views(batch.inputs, GlobalId::I);
+    for (std::size_t k = 0; k < step.soft.size(); ++k) {
+      points.store(k, step.at[step.soft[k]]);
+      views.store(k, live[step.soft[k]]->frame.along);
     }
     const auto start = std::chrono::steady_clock::now();
-    run(batch, soft.size(), scratch, scratch.normal_bound);
+    run(batch, step.soft.size(), scratch, scratch.normal_bound);
     scratch.counts.gradient_ns += nanoseconds_since(start);
-    scratch.counts.gradient_samples += static_cast<long>(soft.size());
-    take_normals(batch, options_.normal_kernel->outputs(), soft, [](std::size_t k) { return k; }, normals);
+    scratch.counts.gradient_samples += static_cast<long>(step.soft.size());
+    take_normals(batch, options_.normal_kernel->outputs(), [](std::size_t k) { return k; }, step);
   }
 
   // 1989 section 3.1: the gradient from the previous sample along the ray
   // and two probes off it (render/density_gradient.h).
-  void probed_normals(const std::vector<MarchingRay*>& live, const std::vector<std::size_t>& soft,
-                      std::vector<glm::vec3>& normals, TileScratch& scratch) const {
-    if (soft.empty()) return;
+  void probed_normals(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+    StepSamples& step = scratch.step;
+    if (step.soft.empty()) return;
     Batch& probes = scratch.probes;
-    for (std::size_t k = 0; k < soft.size(); ++k) {
-      const MarchingRay& ray = *live[soft[k]];
-      const glm::vec3 x = ray.at(ray.sample_t());
-      store3(probes.inputs, GlobalId::P, 2 * k, x + step_ * ray.frame.across_v);
-      store3(probes.inputs, GlobalId::P, 2 * k + 1, x + step_ * ray.frame.across_w);
-      store3(probes.inputs, GlobalId::I, 2 * k, ray.frame.along);
-      store3(probes.inputs, GlobalId::I, 2 * k + 1, ray.frame.along);
+    const Planes3 points(probes.inputs, GlobalId::P), views(probes.inputs, GlobalId::I);
+    for (std::size_t k = 0; k < step.soft.size(); ++k) {
+      const MarchingRay& ray = *live[step.soft[k]];
+      const glm::vec3& x = step.at[step.soft[k]];
+      points.store(2 * k, x + step_ * ray.frame.across_v);
+      points.store(2 * k + 1, x + step_ * ray.frame.across_w);
+      views.store(2 * k, ray.frame.along);
+      views.store(2 * k + 1, ray.frame.along);
     }
     const auto start = std::chrono::steady_clock::now();
-    run(probes, 2 * soft.size(), scratch);
+    run(probes, 2 * step.soft.size(), scratch);
     scratch.counts.gradient_ns += nanoseconds_since(start);
-    scratch.counts.gradient_samples += static_cast<long>(2 * soft.size());
-    for (std::size_t k = 0; k < soft.size(); ++k) {
-      const MarchingRay& ray = *live[soft[k]];
-      const float t = ray.sample_t();
+    scratch.counts.gradient_samples += static_cast<long>(2 * step.soft.size());
+    const float* probed = probes.outputs.plane(layout_.plane(OutputId::density));
+    for (std::size_t k = 0; k < step.soft.size(); ++k) {
+      const std::size_t i = step.soft[k];
+      const MarchingRay& ray = *live[i];
       const glm::vec3 gradient = density_gradient(
-          ray.frame, GradientSamples{output(scratch.samples, OutputId::density, soft[k]), ray.previous_density,
-                                     std::max(t - ray.previous_t, 1e-30f), output(probes, OutputId::density, 2 * k),
-                                     output(probes, OutputId::density, 2 * k + 1), step_});
+          ray.frame, GradientSamples{step.density[i], ray.previous_density, std::max(step.t[i] - ray.previous_t, 1e-30f),
+                                     probed[2 * k], probed[2 * k + 1], step_});
       const float length = glm::length(gradient);
-      if (length > 0.0f && std::isfinite(length)) normals[soft[k]] = -gradient / length;
+      if (length > 0.0f && std::isfinite(length)) step.normal[i] = -gradient / length;
     }
   }
 
@@ -626,65 +666,76 @@ class Marcher {
   // become opaque are dropped.
   void march_once(std::vector<MarchingRay*>& live, TileScratch& scratch) const {
     Batch& samples = scratch.samples;
-    if (occupancy_)
-      for (MarchingRay* ray : live) skip_empty_space(*ray, scratch.counts);
+    StepSamples& step = scratch.step;
     const std::size_t count = live.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      const MarchingRay& ray = *live[i];
-      store3(samples.inputs, GlobalId::P, i, ray.at(ray.sample_t()));
-      store3(samples.inputs, GlobalId::I, i, ray.frame.along);
+    step.t.resize(count);
+    step.at.resize(count);
+    // The normal faces the viewer where the density has none (below).
+    step.normal.resize(count);
+    {
+      const Planes3 points(samples.inputs, GlobalId::P), views(samples.inputs, GlobalId::I);
+      for (std::size_t i = 0; i < count; ++i) {
+        MarchingRay& ray = *live[i];
+        if (occupancy_) skip_empty_space(ray, scratch.counts);
+        step.t[i] = ray.sample_t();
+        step.at[i] = ray.at(step.t[i]);
+        step.normal[i] = -ray.frame.along;
+        points.store(i, step.at[i]);
+        views.store(i, ray.frame.along);
+      }
     }
     run(samples, count, scratch);
+    step.density.assign(samples.outputs.plane(layout_.plane(OutputId::density)),
+                        samples.outputs.plane(layout_.plane(OutputId::density)) + count);
+    step.opacity.resize(count);
+    const float* opacities = opacity_plane(layout_, samples);
+    for (std::size_t i = 0; i < count; ++i) step.opacity[i] = unit_opacity(opacities[i]);
 
     // The outward normal where 0 < density < 1 (the samples lit by their
-    // normal); elsewhere the normal faces the viewer. Only a sample that
-    // adds to the ray is lit, so only its normal is wanted, unless it may
-    // bend the ray: a hard surface's opacity (a step of its density) is 0
-    // through most of the soft shell, where probing cost stf_bumps 38% of
-    // its samples.
-    std::vector<glm::vec3> normals;
+    // normal). Only a sample that adds to the ray is lit, so only its
+    // normal is wanted, unless it may bend the ray: a hard surface's
+    // opacity (a step of its density) is 0 through most of the soft shell,
+    // where probing cost stf_bumps 38% of its samples.
     if (needs_gradients()) {
-      std::vector<std::size_t> soft;
-      for (std::size_t i = 0; i < count; ++i) {
-        const float density = output(samples, OutputId::density, i);
-        if (live[i]->segment >= 0 && density > 0.0f && density < 1.0f && (refracts_ || opacity(samples, i) > 0.0f))
-          soft.push_back(i);
-      }
-      normals.resize(count);
-      for (std::size_t i = 0; i < count; ++i) normals[i] = -live[i]->frame.along;
+      step.soft.clear();
+      for (std::size_t i = 0; i < count; ++i)
+        if (live[i]->segment >= 0 && step.density[i] > 0.0f && step.density[i] < 1.0f &&
+            (refracts_ || step.opacity[i] > 0.0f))
+          step.soft.push_back(i);
       if (own_normals_)
-        take_normals(samples, layout_, soft, [&](std::size_t k) { return soft[k]; }, normals);
+        take_normals(samples, layout_, [&](std::size_t k) { return step.soft[k]; }, step);
       else if (scratch.normal_bound)
-        exact_normals(live, soft, normals, scratch);
+        exact_normals(live, scratch);
       else
-        probed_normals(live, soft, normals, scratch);
+        probed_normals(live, scratch);
     }
-    const std::vector<float> transmittance = light_transmittance(live, normals, scratch);
+    light_transmittance(live, scratch);
 
+    const float* colors[3] = {nullptr, nullptr, nullptr};
+    if (layout_.provides(OutputId::color))
+      for (int c = 0; c < 3; ++c) colors[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
+    const std::size_t lights = scene_.lights().size();
+    step.done.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
       MarchingRay& ray = *live[i];
-      const float t = ray.sample_t();
-      const float density = output(samples, OutputId::density, i);
-      const float sample_opacity = opacity(samples, i);
+      const float t = step.t[i];
+      const float sample_opacity = step.opacity[i];
       // Empty space (most samples) adds nothing: no shading, no pow.
       if (ray.segment >= 0 && sample_opacity > 0.0f) {
         glm::vec3 color(1.0f);
-        if (layout_.provides(OutputId::color))
-          for (int c = 0; c < 3; ++c) color[c] = samples.outputs.plane(layout_.plane(OutputId::color, c))[i];
+        if (colors[0])
+          for (int c = 0; c < 3; ++c) color[c] = colors[c][i];
         if (lit_) {
           SurfaceMaterial material;
           material.color = color;
           LitPoint point;
-          point.point = ray.at(t);
-          point.shading_normal = normals[i];
-          point.geometric_normal = normals[i];
+          point.point = step.at[i];
+          point.shading_normal = step.normal[i];
+          point.geometric_normal = step.normal[i];
           point.to_viewer = -ray.frame.along;
-          for (std::size_t l = 0; l < scene_.lights().size(); ++l)
-            if (scene_.lights()[l].type != LightType::directional)
-              ray.lights_seen[l] = light_seen(scene_.lights()[l], point.point, point.to_viewer);
           // Objects cast shadows into the volume too (shadows_ tests them).
-          color = light_point(scene_, material, point, shadows_, transmittance.data() + i * scene_.lights().size(),
-                              ray.lights_seen);
+          color = light_point(scene_, material, point, shadows_, step.transmittance.data() + i * lights,
+                              lights_seen_from(ray, point.point));
         }
         // Front to back: t = alpha_k (1 - alpha); color += t color_k.
         const float alpha = segment_alpha(sample_opacity, ray.segment_length());
@@ -695,18 +746,18 @@ class Marcher {
         }
       }
       ray.previous_t = t;
-      ray.previous_density = density;
+      ray.previous_density = step.density[i];
       ++ray.segment;
       if (refracts_ && ray.segment > 0) {
         const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
-        if (std::fabs(ior - ray.ior) > 1e-4f) refract(ray, t, normals[i], ior);
+        if (std::fabs(ior - ray.ior) > 1e-4f) refract(ray, t, step.normal[i], ior);
       }
+      step.done[i] = ray.segment_start() >= ray.exit || ray.alpha >= 1.0f - options_.termination;
     }
-    live.erase(std::remove_if(live.begin(), live.end(),
-                              [&](const MarchingRay* ray) {
-                                return ray->segment_start() >= ray->exit || ray->alpha >= 1.0f - options_.termination;
-                              }),
-               live.end());
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i)
+      if (!step.done[i]) live[kept++] = live[i];
+    live.resize(kept);
   }
 
   const Kernel& kernel_;
@@ -765,9 +816,10 @@ SampleCosts time_samples(const OccupancyGrid& grid, const Kernel& kernel, BoundK
   if (empty.size() < probes / 8 || occupied.size() < probes / 8) return {};
   const auto batch_of = [&](const std::vector<glm::vec3>& points) {
     auto batch = std::make_unique<Batch>(points.size(), kernel, step);
+    const Planes3 at(batch->inputs, GlobalId::P), views(batch->inputs, GlobalId::I);
     for (std::size_t i = 0; i < points.size(); ++i) {
-      store3(batch->inputs, GlobalId::P, i, points[i]);
-      store3(batch->inputs, GlobalId::I, i, glm::vec3(0.0f, 0.0f, -1.0f));
+      at.store(i, points[i]);
+      views.store(i, glm::vec3(0.0f, 0.0f, -1.0f));
     }
     return batch;
   };
@@ -917,15 +969,17 @@ Result<LightGrids> fill_light_grids(const Kernel& kernel, ThreadBindings& bindin
                                         const std::vector<glm::vec3>& toward_light, std::vector<float>& opacities) {
     std::unique_ptr<Batch>& batch = batches.local();
     if (!batch || batch->inputs.count() < points.size()) batch = std::make_unique<Batch>(points.size(), kernel, step);
+    const Planes3 at(batch->inputs, GlobalId::P), views(batch->inputs, GlobalId::I);
     for (std::size_t i = 0; i < points.size(); ++i) {
-      store3(batch->inputs, GlobalId::P, i, points[i]);
-      store3(batch->inputs, GlobalId::I, i, toward_light[i]);
+      at.store(i, points[i]);
+      views.store(i, toward_light[i]);
     }
     {
       StageClock clock(kernel_ns);
       bindings.local().run(batch->inputs.inputs(), batch->outputs.planes(), points.size());
     }
-    for (std::size_t i = 0; i < points.size(); ++i) opacities[i] = sample_opacity(kernel.outputs(), *batch, i);
+    const float* opacity = opacity_plane(kernel.outputs(), *batch);
+    for (std::size_t i = 0; i < points.size(); ++i) opacities[i] = unit_opacity(opacity[i]);
     lane_slots += static_cast<long>(lane_slots_of(points.size(), options.lane_width));
   };
   LightGrids grids;
