@@ -431,10 +431,14 @@ class Marcher {
   // at least `spacings` times the grid's ray spacing (a shadow map's normal
   // offset: from √2 spacings, the four light rays it interpolates pass on
   // the lit side of the point's tangent plane, where a lit surface does
-  // not shadow them).
+  // not shadow them). A light behind the point's surface lights nothing
+  // there (light_point passes it over, as the same test tells), so
+  // nothing is looked up or marched toward it.
   void shadow_from(const glm::vec3& point, const glm::vec3& normal, float offset, float spacings, std::size_t first,
                    std::vector<float>& transmittance, std::vector<ShadowRay>& rays, TileCounts& counts) const {
     for (std::size_t l = 0; l < scene_.lights().size(); ++l) {
+      float distance = 0.0f;
+      if (glm::dot(normal, direction_to_light(scene_.lights()[l], point, &distance)) <= 0.0f) continue;
       if (l < grids_.size() && grids_[l]) {
         ++counts.shadow_lookups;
         const std::optional<float> looked_up =
