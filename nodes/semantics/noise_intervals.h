@@ -79,6 +79,24 @@ Interval lattice_over_cells(const Interval (&box)[D], Interval range, OverCell o
   return meet(widened(result, lattice_rounding_margin), range);
 }
 
+// A knot's offset along an axis of a cell is the box's fraction of the
+// cell there minus 0 or 1 (its lattice step), so the knots of a cell share
+// 2 D offsets and their weights, bounded once (noise: 6 of 24).
+template <int D>
+struct KnotOffsets {
+  Interval offset[D][2], weight[D][2];
+
+  explicit KnotOffsets(const Interval* fraction) {
+    for (int a = 0; a < D; ++a)
+      for (int step = 0; step < 2; ++step) {
+        offset[a][step] = fraction[a] + (step == 0 ? 0.0f : -1.0f);
+        weight[a][step] = noise_weight_over(offset[a][step]);
+      }
+  }
+  // The step of a knot's offset from the corner (0 or -1).
+  static int step(float offset) { return offset != 0.0f; }
+};
+
 // Noise over the box, cell by cell: within a cell each knot's gradient is
 // known, its weights are monotone in the offsets and its slope linear in
 // them. `cell_axis(cell, axis)` gives the float axis a cell hashes with.
@@ -86,15 +104,17 @@ template <class CellAxis>
 Interval noise_over_cells(const NoiseTables& tables, Interval x, Interval y, Interval z, CellAxis cell_axis) {
   const Interval box[3] = {x, y, z};
   return lattice_over_cells(box, lattice_range(x, y, z, noise_bound), [&](const float* corner, const Interval* fraction) {
+    const KnotOffsets<3> knots(fraction);
     Interval sum = 0.0f;
     // At the corner itself each knot's offsets are minus its lattice step.
     semantics::for_each_noise_knot(
         tables, corner[0], corner[1], corner[2], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
         cell_axis(corner[2], 2), [&](auto slot, float du, float dv, float dw) {
-          const Interval u = fraction[0] + du, v = fraction[1] + dv, w = fraction[2] + dw;
+          const int iu = knots.step(du), iv = knots.step(dv), iw = knots.step(dw);
+          const Interval &u = knots.offset[0][iu], &v = knots.offset[1][iv], &w = knots.offset[2][iw];
           const Interval slope = u * tables.hashed_gradient_x[slot] + v * tables.hashed_gradient_y[slot] +
                                  w * tables.hashed_gradient_z[slot];
-          sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(w) * slope;
+          sum = sum + knots.weight[0][iu] * knots.weight[1][iv] * knots.weight[2][iw] * slope;
         });
     return sum;
   });
@@ -146,12 +166,15 @@ Interval noise4_over_cells(const NoiseTables& tables, Interval x, Interval y, In
   };
   return lattice_over_cells(box, lattice_range(x, y, z, w, noise4_bound), [&](const float* corner,
                                                                                const Interval* fraction) {
+    const KnotOffsets<4> knots(fraction);
     Interval sum = 0.0f;
     semantics::for_each_noise4_knot(
         tables, corner[0], corner[1], corner[2], corner[3], cell_axis(corner[0], 0), cell_axis(corner[1], 1),
         cell_axis(corner[2], 2), cell_axis(corner[3], 3), [&](auto slot, float du, float dv, float ds, float dt) {
-          const Interval u = fraction[0] + du, v = fraction[1] + dv, s = fraction[2] + ds, t = fraction[3] + dt;
-          sum = sum + noise_weight_over(u) * noise_weight_over(v) * noise_weight_over(s) * noise_weight_over(t) *
+          const int iu = knots.step(du), iv = knots.step(dv), is = knots.step(ds), it = knots.step(dt);
+          const Interval &u = knots.offset[0][iu], &v = knots.offset[1][iv], &s = knots.offset[2][is],
+                         &t = knots.offset[3][it];
+          sum = sum + knots.weight[0][iu] * knots.weight[1][iv] * knots.weight[2][is] * knots.weight[3][it] *
                           semantics::noise4_slope(gradient_at(slot), u, v, s, t);
         });
     return sum;
