@@ -111,12 +111,12 @@ bool OccupancyGrid::inside(const glm::vec3& point) const {
 bool OccupancyGrid::occupied(const glm::vec3& point) const { return !inside(point) || cell_occupied(cell_of(point)); }
 
 OccupancyGrid::Exit OccupancyGrid::exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin,
-                                            const glm::vec3& direction) const {
+                                            const glm::vec3& inverse_direction) const {
   Exit exit{std::numeric_limits<float>::infinity(), 0};
   for (int a = 0; a < 3; ++a) {
-    if (direction[a] == 0.0f) continue;
-    const int face = first[a] + (direction[a] > 0.0f ? cells : 0);
-    const float at = (lo_[a] + static_cast<float>(face) * cell_size_[a] - origin[a]) / direction[a];
+    if (std::isinf(inverse_direction[a])) continue;  // the ray runs along the faces across this axis
+    const int face = first[a] + (inverse_direction[a] > 0.0f ? cells : 0);
+    const float at = (lo_[a] + static_cast<float>(face) * cell_size_[a] - origin[a]) * inverse_direction[a];
     if (at < exit.t) exit = {at, a};
   }
   return exit;
@@ -138,16 +138,19 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // index: a position a hair past the face could round back into the box
   // when the ray grazes it.
   const glm::ivec3 step(direction.x > 0.0f ? 1 : -1, direction.y > 0.0f ? 1 : -1, direction.z > 0.0f ? 1 : -1);
+  // Multiplied by, where a cell's faces are met: a division per axis and
+  // cell was most of the walk.
+  const glm::vec3 inverse = 1.0f / direction;
   if (cell_occupied(cell)) {
     // The run of occupied cells the ray is in: it need not ask again
     // before it leaves the run (a hard surface's shell is some cells thick).
-    Exit leaves = exit_of(cell, 1, origin, direction);
+    Exit leaves = exit_of(cell, 1, origin, inverse);
     for (int run = 1; run < max_occupied_run && leaves.t < end; ++run) {
       glm::ivec3 next = cell;
       next[leaves.axis] += step[leaves.axis];
       if (next[leaves.axis] < 0 || next[leaves.axis] >= cells_per_side || !cell_occupied(next)) break;
       cell = next;
-      leaves = exit_of(cell, 1, origin, direction);
+      leaves = exit_of(cell, 1, origin, inverse);
     }
     return {t, leaves.t - margin};
   }
@@ -158,7 +161,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
     const bool brick_empty = bricks_[brick_index(brick)] == 0;
     const glm::ivec3 box_first = brick_empty ? brick * cells_per_brick_side : cell;
     const int box_cells = brick_empty ? cells_per_brick_side : 1;
-    const auto [exit, axis] = exit_of(box_first, box_cells, origin, direction);
+    const auto [exit, axis] = exit_of(box_first, box_cells, origin, inverse);
     if (!(exit < end)) return {end, end};
     t = std::max(exit, t);
     if (brick_empty) {
@@ -170,7 +173,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
     }
     if (cell[axis] < 0 || cell[axis] >= cells_per_side) return {end, end};
     if (cell_occupied(cell))
-      return {std::max(exit - margin, start), exit_of(cell, 1, origin, direction).t - margin};
+      return {std::max(exit - margin, start), exit_of(cell, 1, origin, inverse).t - margin};
   }
   return {t, t};
 }

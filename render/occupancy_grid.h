@@ -94,12 +94,13 @@ class OccupancyGrid {
     return cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] != 0;
   }
   // Where the ray leaves the box of `cells` cells a side from `first`,
-  // and through a face across which axis.
+  // and through a face across which axis (the ray given by its origin and
+  // the inverse of its direction).
   struct Exit {
     float t;
     int axis;
   };
-  Exit exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin, const glm::vec3& direction) const;
+  Exit exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin, const glm::vec3& inverse_direction) const;
 
   glm::vec3 lo_{0.0f}, hi_{0.0f}, cell_size_{1.0f}, cells_per_unit_{1.0f};
   std::vector<std::uint8_t> bricks_;  // per brick: 0 empty, 1 occupied (its cells say where)
