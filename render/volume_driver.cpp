@@ -415,10 +415,11 @@ class Marcher {
   // A primary ray's segments whose samples lie in empty space add nothing
   // to it: it moves on to the last of them, whose sample is taken (it adds
   // nothing either) so that the next sample has the one before it for its
-  // gradient, as without skipping. Refraction needs the index of every
-  // sample, so a refracting graph's rays skip nothing.
+  // gradient, as without skipping. A refracting graph's empty space is
+  // where its index is 1 as well (bound_empty_space), which bends no ray
+  // travelling in index 1: such a ray skips it, any other samples it.
   void skip_empty_space(MarchingRay& ray, TileCounts& counts) const {
-    if (ray.segment < 0 || refracts_ || ray.sample_t() < ray.occupied_until) return;
+    if (ray.segment < 0 || (refracts_ && bends(ray, 1.0f)) || ray.sample_t() < ray.occupied_until) return;
     const Clearance clearance = occupancy_->next_occupied(ray.origin, ray.frame.along, ray.sample_t(), ray.exit);
     ray.occupied_until = clearance.until;
     counts.skipped_samples += ray.advance_to_last_sample_before(clearance.from);
@@ -468,6 +469,10 @@ class Marcher {
   // From the previous sample and two probes, which needs a sample before
   // the entry for the first gradient.
   bool probes_gradients() const { return needs_gradients() && !own_normals_ && !options_.normal_kernel; }
+
+  // Whether a sample of index `ior` bends `ray`: where it differs from the
+  // index the ray travels in.
+  static bool bends(const MarchingRay& ray, float ior) { return std::fabs(ior - ray.ior) > 1e-4f; }
 
   // 1989 blue glass: where the refractive index of a sample differs from
   // the one the ray travels in, the ray bends by Snell's law about the
@@ -754,7 +759,7 @@ class Marcher {
       ++ray.segment;
       if (refracts_ && ray.segment > 0) {
         const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
-        if (std::fabs(ior - ray.ior) > 1e-4f) refract(ray, t, step.normal[i], ior);
+        if (bends(ray, ior)) refract(ray, t, step.normal[i], ior);
       }
       step.done[i] = ray.segment_start() >= ray.exit || ray.alpha >= 1.0f - options_.termination;
     }
@@ -866,7 +871,8 @@ struct EmptySpace {
 
 // Where the volume may be visible: boxes of P (with any direction I) over
 // which the graph's interval enclosure (interp/interval_program.h) of
-// its opacity, or density where it has none, is not certainly 0. The
+// its opacity, or density where it has none, is not certainly 0, or, where
+// the graph refracts, its index not certainly 1. The
 // second level is bounded only where skipping pays: where the kernel
 // spends on empty space much of what it spends elsewhere, and where the
 // samples the second level would save this frame's `rays` (estimated from
@@ -885,6 +891,9 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
   tbb::enumerable_thread_specific<Bounding> threads;
   const OutputLayout& layout = program.outputs();
   const int plane = layout.plane(layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density);
+  // A refracting graph's box may bend a ray wherever its index may differ
+  // from 1, the index rays start in.
+  const int ior_plane = layout.provides(OutputId::ior) ? layout.plane(OutputId::ior) : -1;
   const BoxOccupancy occupied = [&](const glm::vec3& lo, const glm::vec3& hi) {
     Bounding& local = threads.local();
     if (!local.bound) {
@@ -898,6 +907,10 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
     }
     box.set(GlobalId::filter_width, {step, step});
     local.bound->evaluate(box, local.outputs.data());
+    if (ior_plane >= 0) {
+      const lanes::Interval ior = local.outputs[static_cast<std::size_t>(ior_plane)];
+      if (!(ior.lo == 1.0f && ior.hi == 1.0f)) return true;
+    }
     return !(local.outputs[static_cast<std::size_t>(plane)].hi <= 0.0f);
   };
   const glm::vec3 lo(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]);

@@ -256,6 +256,44 @@ TEST(VolumeDriver, RefractionFollowsSnellsLaw) {
               0.01f);
 }
 
+// A refracting graph's empty space is where its opacity is 0 and its
+// index 1: a ray travelling in index 1 steps over it, and nothing else
+// is stepped over (a ray leaving a hard glass ball bends back at its first
+// sample outside, empty as that may be, and where it meets the wall behind
+// shows it; a medium of index 1.2 around the ball bends every ray where it
+// enters the box), so skipping changes no pixel.
+TEST(VolumeDriver, RefractingRaysSkipOnlyWhereTheIndexIsOne) {
+  for (const char* around : {"1", "1.2"}) {
+    const LoadedGraph loaded = compile_volume(
+        std::string(R"({"id": "p", "op": "P"},
+      {"id": "glass", "op": "sphere", "in": {"p": "p", "radius": 0.45, "softness": 0}},
+      {"id": "rise", "op": "mul", "in": {"a": "glass", "b": 0.5}}, {"id": "ior", "op": "add", "in": {"a": )") +
+            around + R"(, "b": "rise"}},
+      {"id": "faint", "op": "mul", "in": {"a": "glass", "b": 0.01}},
+      {"id": "wall", "op": "box", "in": {"p": "p", "center": [0, 0, -0.8], "half_size": [5, 5, 0.1], "softness": 0}},
+      {"id": "density", "op": "union", "in": {"a": "glass", "b": "wall"}},
+      {"id": "seen", "op": "max", "in": {"a": "faint", "b": "wall"}},
+      {"id": "c", "op": "to_color", "in": {"v": "p"}}, {"id": "tint", "op": "abs", "in": {"x": "c"}})",
+        R"("density": "density", "opacity": "seen", "color": "tint", "ior": "ior")");
+    auto kernel = make_interpreted_kernel(loaded.ir);
+    SceneDesc desc = looking_down_z(Lighting::none);
+    desc.camera.orthographic = false;
+    VolumeRenderOptions skipping, marching;
+    skipping.bound_finely_always = true;
+    marching.skip_empty_space = false;
+    VolumeRenderStats skipped, marched;
+    // A step longer than the occupancy cells (1/32 here), so that a ray's
+    // first sample outside the ball may lie in an empty cell.
+    EXPECT_EQ(render(*kernel, loaded, desc, unit_box(0.05f), 40, skipping, &skipped).pixels,
+              render(*kernel, loaded, desc, unit_box(0.05f), 40, marching, &marched).pixels)
+        << "index " << around;
+    if (std::string(around) == "1")
+      EXPECT_GT(skipped.skipped_samples, marched.density_samples / 2);
+    else
+      EXPECT_EQ(skipped.skipped_samples, 0);
+  }
+}
+
 ObjectDesc plane_at_z(float z, std::array<float, 3> color) {
   ObjectDesc plane;
   plane.type = ObjectType::plane;
