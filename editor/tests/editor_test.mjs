@@ -72,6 +72,13 @@ const request = (path, options = {}) =>
   fetch(`${origin.origin}${path}`, { ...options, headers: { "X-Shadetree-Token": origin.searchParams.get("token") } });
 const stats = async () => (await request("/api/stats")).json();
 
+// How long a step waits for the server's answer to an edit (a preview, a
+// check, a file opened). The suite runs this test beside the MPI and
+// render tests on two cores, where a cold kernel compile and its draft can
+// take seconds (10 s was once too few for a fireball preview after an
+// edit); latency is measured and reported on its own lines, not here.
+const serverWait = 30000;
+
 const browser = await puppeteer.launch({
   executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
   headless: true,
@@ -194,7 +201,7 @@ try {
   const compilesBefore = (await stats()).compiles;
   const previewsBefore = await page.evaluate(() => window.shadetreeEditor.state.previews);
   await dragSlider("scale", 10);
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBefore);
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBefore);
   await new Promise((resolve) => setTimeout(resolve, 300));
   assert.notEqual(await previewPixels(), before, "the preview changed");
   assert.equal((await stats()).compiles, compilesBefore, "a param drag never recompiles");
@@ -214,7 +221,7 @@ try {
   const serverDrag = await timedDrag("scale", page);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === window.shadetreeEditor.state.previewSide &&
                                    window.shadetreeEditor.state.latencies.every((entry) => !entry.gpu),
-                             { timeout: 10000 });
+                             { timeout: serverWait });
   if (gpuBox) await page.click("#gpu");
   await page.evaluate(() => window.shadetreeEditor.undo());
   assert.equal(await page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params.scale.default), draggedScale,
@@ -250,7 +257,7 @@ try {
   await page.click('input[name="turbulence_amount.max"]', { clickCount: 3 });
   await page.keyboard.type("50");
   await page.keyboard.press("Tab");
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeMax);
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBeforeMax);
   assert.equal(await page.$eval('input[name="turbulence_amount"]', (slider) => slider.max), "50");
   assert.equal((await paramsOf()).turbulence_amount.max, 50);
   assert.equal((await stats()).compiles, compilesBeforeMax, "a new max never recompiles");
@@ -268,12 +275,12 @@ try {
   // and the checker says so there; undo brings the int back.
   await page.click('button[title="edit param octaves"]');
   await page.select('select[name="octaves.type"]', "float");
-  await page.waitForFunction(() => window.shadetreeEditor.state.errors[0]?.node === "turb", { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors[0]?.node === "turb", { timeout: serverWait });
   const retyped = await page.evaluate(() => window.shadetreeEditor.state.errors[0]);
   assert.equal(retyped.input, "octaves", retyped.text);
   assert.equal((await paramsOf()).octaves.type, "float");
   await pressKeys("Control", "z");
-  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: serverWait });
   assert.equal((await paramsOf()).octaves.type, "int");
   await page.click('button[title="edit param octaves"]');  // closed again: the panel below stays in view
   console.log(`retyped octaves as float: ${retyped.text.replace(/^.*: node/, "node")}; undo made it an int again`);
@@ -286,7 +293,7 @@ try {
   const renamed = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas());
   assert.deepEqual(Object.keys(renamed.params), ["scale", "stir", "octaves"], "the renamed param keeps its place");
   assert.equal(renamed.nodes.find((n) => n.id === "stirred").in.b, "$stir");
-  await page.waitForFunction(() => document.getElementById("status").textContent.endsWith(": ok"), { timeout: 10000 });
+  await page.waitForFunction(() => document.getElementById("status").textContent.endsWith(": ok"), { timeout: serverWait });
   console.log("renamed turbulence_amount to stir: stirred.b reads $stir, the graph checks");
 
   // Add a param, delete it, and undo the delete; a param in use is not deleted.
@@ -322,14 +329,14 @@ try {
     editor.connect("noise1", "out", "stirred", "a");
   });
   await page.waitForFunction(() => window.shadetreeEditor.documentFromCanvas().nodes.some((n) => n.id === "stirred" && n.in.a === "noise1"));
-  await page.waitForFunction(() => document.getElementById("status").textContent.endsWith(": ok"), { timeout: 10000 });
+  await page.waitForFunction(() => document.getElementById("status").textContent.endsWith(": ok"), { timeout: serverWait });
   console.log("added noise1 and wired it into stirred.a: the graph checks");
 
   // A vec2 into a vec3 input: the checker's error, on that input.
   await page.select("#palette", "uv");
   await page.click("#add-node");
   await page.evaluate(() => window.shadetreeEditor.connect("uv1", "out", "noise1", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length > 0, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length > 0, { timeout: serverWait });
   const error = await page.evaluate(() => window.shadetreeEditor.state.errors[0]);
   assert.equal(error.node, "noise1");
   assert.equal(error.input, "p");
@@ -340,7 +347,7 @@ try {
   // A second fault, in turb, which no output reads since noise1 took its
   // place in stirred.a: shown too, in amber beside noise1's red.
   await page.evaluate(() => window.shadetreeEditor.connect("uv1", "out", "turb", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 1, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 1, { timeout: serverWait });
   const shown = await page.evaluate(() => {
     const { state, graph } = window.shadetreeEditor;
     const view = (id) => graph._nodes.find((v) => v.shadetreeId === id);
@@ -350,12 +357,12 @@ try {
   assert.deepEqual(shown, { errors: ["noise1.p"], unread: ["turb.p"], colors: ["#8a2c2c", "#8a6a2c"], label: "p: vec3 ⚠" });
   assert.equal((await page.$eval("#diagnostic", (e) => e.textContent)).split("\n").length, 2);
   await page.evaluate(() => window.shadetreeEditor.connect("p", "out", "turb", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 0, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors.length === 0, { timeout: serverWait });
   console.log("wired uv1 into turb.p, which no output reads: both faults shown, noise1's red and turb's amber");
 
   // Back to a valid graph, save, and check the file.
   await page.evaluate(() => window.shadetreeEditor.connect("p", "out", "noise1", "p"));
-  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: serverWait });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.save()), true);
   const check = spawnSync(binary, ["check", join(folder, "marble.json")], { encoding: "utf8" });
   assert.equal(check.status, 0, check.stderr);
@@ -376,7 +383,7 @@ try {
   const previewsBeforeInput = await page.evaluate(() => window.shadetreeEditor.state.previews);
   await page.type('input[name="new input name"]', "gain");
   await page.click('button[title^="add an input"]');
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeInput);
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBeforeInput);
   assert.deepEqual((await inputsOf()).gain, { type: "float", default: 0.5 });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.state.errors.length), 0, "calls stay valid");
   assert.match(await page.$eval("#scope-signature", (e) => e.textContent), /gain/);
@@ -401,7 +408,7 @@ try {
   // The picture to come back to is the full-size one: the input edits
   // above may still show a half-size draft, refined on their pause.
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === window.shadetreeEditor.state.previewSide,
-                             { timeout: 10000 });
+                             { timeout: serverWait });
   const beforeDrag = await previewPixels();
   const previewsBeforeDrag = await page.evaluate(() => window.shadetreeEditor.state.previews);
   const curve = await (await page.$(".curve-editor canvas")).boundingBox();
@@ -410,11 +417,11 @@ try {
   await page.mouse.down();
   for (let step = 1; step <= 8; ++step) await page.mouse.move(curve.x + knot[0], curve.y + knot[1] - step * 8);
   await page.mouse.up();
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeDrag);
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBeforeDrag);
   const knotsDragged = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
   assert.notEqual(knotsDragged, knotsBefore, "the drag moved a knot");
   await page.waitForFunction(() => window.shadetreeEditor.history.canUndo && !window.shadetreeEditor.history.take, { timeout: 5000 });
-  await page.waitForFunction((sum) => window.shadetreeEditor.state.previews > 0 && window.previewChecksum() !== sum, { timeout: 10000 }, beforeDrag);
+  await page.waitForFunction((sum) => window.shadetreeEditor.state.previews > 0 && window.previewChecksum() !== sum, { timeout: serverWait }, beforeDrag);
   console.log(`dragged spline knot 3 of marble_color.ramp: preview changed`);
 
   // Undo (Ctrl+Z) brings the knots and the picture back; redo (Ctrl+Shift+Z) the drag.
@@ -423,7 +430,7 @@ try {
   await page.keyboard.press("z");
   await page.keyboard.up("Control");
   assert.equal(await ramp(), knotsBefore, "undo restores the knots");
-  await page.waitForFunction((sum) => window.previewChecksum() === sum, { timeout: 10000 }, beforeDrag);
+  await page.waitForFunction((sum) => window.previewChecksum() === sum, { timeout: serverWait }, beforeDrag);
   await page.keyboard.down("Control");
   await page.keyboard.down("Shift");
   await page.keyboard.press("z");
@@ -517,7 +524,7 @@ try {
   assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeVolume + 2,
             `opening draws a draft, then the full preview: ${await page.evaluate(() => document.getElementById("preview-info").textContent)}`);
   await dragSlider("scale", 6);
-  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: 10000, polling: 5 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide < 256, { timeout: serverWait, polling: 5 });
   const draftSide = await page.evaluate(() => window.shadetreeEditor.state.drawnSide);
   assert.match(await page.evaluate(() => document.getElementById("preview-info").textContent), /refining/);
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
@@ -527,7 +534,7 @@ try {
   assert.deepEqual(frameSlider, ["0", "47", false], "fireball's frames 0 to 47 on the slider");
   await page.$eval("#frame", (slider) => { slider.value = "47"; slider.dispatchEvent(new Event("change")); });
   await page.click("#play");
-  await page.waitForFunction(() => window.shadetreeEditor.state.frame === 0, { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.frame === 0, { timeout: serverWait });
   await page.click("#play");
   await page.waitForFunction(() => window.shadetreeEditor.state.drawnSide === 256, { timeout: 60000 });
   console.log("fireball.json: the frame slider spans its render.frames, 0 to 47; playing from 47 went on at 0");
@@ -645,7 +652,7 @@ try {
   for (const name of gallery) {
     const path = `roundtrip/${name}`;
     await page.select("#graph-list", path);
-    await page.waitForFunction((path) => window.shadetreeEditor.state.path === path, { timeout: 10000 }, path);
+    await page.waitForFunction((path) => window.shadetreeEditor.state.path === path, { timeout: serverWait }, path);
     assert.equal(await saveWithKeys(path), readFileSync(join(source, "graphs", name), "utf8"), `${path} byte for byte`);
   }
   console.log(`${gallery.length} gallery files opened and saved unedited: each byte for byte the same ` +
@@ -653,7 +660,7 @@ try {
 
   // One param default typed in its field: one line of the file changes.
   await page.select("#graph-list", "roundtrip/fireball.json");
-  await page.waitForFunction(() => window.shadetreeEditor.state.path === "roundtrip/fireball.json", { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "roundtrip/fireball.json", { timeout: serverWait });
   await page.click('input[title="strength: exact value"]', { clickCount: 3 });
   await page.keyboard.type("1.25");
   await page.keyboard.press("Tab");
@@ -682,7 +689,7 @@ try {
   const previewsBeforeRadius = await page.evaluate(() => window.shadetreeEditor.state.previews);
   await typeInto("ball.radius", "1.2");
   await page.keyboard.press("Tab");
-  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, previewsBeforeRadius);
+  await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBeforeRadius);
   assert.deepEqual(await ballInputs(), { p: "scaled", radius: 1.2, softness: 0.9 });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.viewOf("ball").inputs.find((slot) => slot.name === "radius").label),
                "radius: float = 1.2");
@@ -699,7 +706,7 @@ try {
   await pressKeys("Control", "Shift", "z");
   await pressKeys("Control", "Shift", "z");
   await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0 && window.shadetreeEditor.state.previews > 0,
-                             { timeout: 10000 });
+                             { timeout: serverWait });
   const withConstants = (await saveWithKeys("roundtrip/fireball.json")).split("\n");
   const changedByConstants = original.flatMap((line, i) => (line === withConstants[i] ? [] : [withConstants[i]]));
   assert.deepEqual(changedByConstants, [
@@ -720,7 +727,7 @@ try {
   await page.waitForSelector('#params input[name="ball_radius"]', { timeout: 5000 });
   assert.equal(await page.$('input[name="ball.radius"]'), null, "the input reads the param: no constant field");
   await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n && window.shadetreeEditor.state.errors.length === 0,
-                             { timeout: 10000 }, beforePromotion);
+                             { timeout: serverWait }, beforePromotion);
   await pressKeys("Control", "z");
   assert.equal((await ballInputs()).radius, 1.2, "undo takes the param away again");
   assert.equal(await page.evaluate(() => window.shadetreeEditor.state.doc.params.ball_radius), undefined);
@@ -890,21 +897,21 @@ try {
   await wire("P1", "out", "turbulence1", "p");
   await wire("turbulence1", "out", "#outputs", "color");
   await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0 && window.shadetreeEditor.state.previews > 0,
-                             { timeout: 10000 });
+                             { timeout: serverWait });
   const previewsBeforeUnread = await page.evaluate(() => window.shadetreeEditor.state.previews);
   // A node nothing reads, with an input missing: a warning on it, while
   // the preview and the thumbnails go on.
   await page.mouse.click(host.x + 60, host.y + 400);
   await addWithPalette("mul");
-  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors[0]?.node === "mul1", { timeout: 10000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.unreadErrors[0]?.node === "mul1", { timeout: serverWait });
   assert.equal(await page.evaluate(() => window.shadetreeEditor.state.errors.length), 0, "an unread node does not stop the preview");
   // The status follows the preview of what the outputs read.
-  await page.waitForFunction(() => !document.getElementById("status").classList.contains("error"), { timeout: 10000 })
+  await page.waitForFunction(() => !document.getElementById("status").classList.contains("error"), { timeout: serverWait })
     .catch(async () => assert.fail(`the status is no error (${await page.$eval("#status", (element) => element.textContent)})`));
   assert.ok(await page.evaluate(() => window.shadetreeEditor.state.previews) >= previewsBeforeUnread, "the preview stays");
   // The read nodes' thumbnails are drawn; mul1's says why it has none.
   await page.waitForFunction(() => ["P1", "turbulence1", "mul1"].every((id) => window.shadetreeEditor.thumbnails.cache.has(`/${id}`)),
-                             { timeout: 10000 });
+                             { timeout: serverWait });
   const thumbnailsWithUnread = await page.evaluate(() => Object.fromEntries(["P1", "turbulence1", "mul1"].map((id) => {
     const entry = window.shadetreeEditor.thumbnails.cache.get(`/${id}`);
     return [id, entry.image ? "image" : entry.why];
@@ -1163,7 +1170,7 @@ try {
     const drawnBefore = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
     requests.length = 0;
     await dragSlider("scale", 25, gpuPage);  // further than the drag above, whose value marble.json was saved with
-    await gpuPage.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: 10000 }, drawnBefore);
+    await gpuPage.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, drawnBefore);
     // The drag's last value drawn, and the thumbnails asked for after the pause.
     await new Promise((resolve) => setTimeout(resolve, 500));
     await gpuPage.waitForFunction(() => window.shadetreeEditor.thumbnails.pending === 0, { timeout: 20000 });
