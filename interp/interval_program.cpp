@@ -16,7 +16,8 @@ using lanes::Interval;
 
 SampleBox::SampleBox() { std::fill(std::begin(planes), std::end(planes), lanes::everything()); }
 
-IntervalProgram::IntervalProgram(ShadeIR ir) : ir_(std::move(ir)), outputs_(output_layout(ir_)) {
+IntervalProgram::IntervalProgram(ShadeIR ir, const std::vector<OutputId>& bounded)
+    : ir_(std::move(ir)), outputs_(output_layout(ir_)) {
   kernels_.resize(ir_.code.size(), nullptr);
   constants_.resize(ir_.code.size());
   for (std::size_t i = 0; i < ir_.code.size(); ++i) {
@@ -24,6 +25,27 @@ IntervalProgram::IntervalProgram(ShadeIR ir) : ir_(std::move(ir)), outputs_(outp
     if (instr.kind != IrOpKind::op) continue;
     kernels_[i] = interp::interval_kernel(instr.op);
     constants_[i] = op_constants(ir_, instr);
+  }
+  // What the bounded outputs depend on, walking back from them: a value's
+  // arguments, and a region's condition where the region holds something
+  // needed (its contents come after it, so are decided first).
+  needed_.assign(ir_.code.size(), 0);
+  bounded_.assign(ir_.outputs.size(), 0);
+  for (std::size_t o = 0; o < ir_.outputs.size(); ++o)
+    if (bounded.empty() || std::find(bounded.begin(), bounded.end(), ir_.outputs[o].id) != bounded.end()) {
+      bounded_[o] = 1;
+      needed_[static_cast<std::size_t>(ir_.outputs[o].value)] = 1;
+    }
+  for (std::size_t i = ir_.code.size(); i-- > 0;) {
+    const IrInstr& instr = ir_.code[i];
+    if (instr.kind == IrOpKind::begin_region) {
+      const auto end = static_cast<std::size_t>(instr.immediate[1]);
+      if (std::any_of(needed_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                      needed_.begin() + static_cast<std::ptrdiff_t>(end), [](char n) { return n != 0; }))
+        needed_[i] = needed_[end] = 1;
+    }
+    if (!needed_[i]) continue;
+    for (int a = 0; a < instr.arg_count; ++a) needed_[static_cast<std::size_t>(instr.args[a])] = 1;
   }
 }
 
@@ -55,7 +77,7 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
   const ShadeIR& ir = program_->ir_;
   for (std::size_t i = 0; i < ir.code.size(); ++i) {
     const IrInstr& instr = ir.code[i];
-    if (instr.uniform != uniform_pass) continue;
+    if (instr.uniform != uniform_pass || !program_->needed_[i]) continue;
     Interval* const* out = &out_planes_[i * 3];
     const int components = component_count(instr.type);
     switch (instr.kind) {
@@ -99,7 +121,9 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
 void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
   execute(/*uniform_pass=*/false, box);
   const OutputLayout& layout = program_->outputs_;
-  for (const IrOutput& output : program_->ir_.outputs) {
+  for (std::size_t o = 0; o < program_->ir_.outputs.size(); ++o) {
+    if (!program_->bounded_[o]) continue;
+    const IrOutput& output = program_->ir_.outputs[o];
     // A scalar value read as a vector output repeats, as on the lanes.
     const int held = component_count(program_->ir_.code[static_cast<std::size_t>(output.value)].type);
     for (int c = 0; c < component_count(output.type); ++c) {

@@ -35,7 +35,11 @@ class BoundIntervalProgram;
 
 class IntervalProgram {
  public:
-  explicit IntervalProgram(ShadeIR ir);
+  // Bounds `bounded` outputs (all where empty): the instructions no
+  // bounded output depends on are not evaluated (a volume's colour where
+  // only its opacity is bounded), and evaluate() leaves the other outputs'
+  // planes alone.
+  explicit IntervalProgram(ShadeIR ir, const std::vector<OutputId>& bounded = {});
 
   const ShadeIR& ir() const { return ir_; }
   const OutputLayout& outputs() const { return outputs_; }
@@ -50,6 +54,8 @@ class IntervalProgram {
   OutputLayout outputs_;
   std::vector<interp::IntervalKernel> kernels_;
   std::vector<OpConstants> constants_;
+  std::vector<char> needed_;  // per instruction: a bounded output depends on it
+  std::vector<char> bounded_;  // per output of the IR
 };
 
 class BoundIntervalProgram {

@@ -881,7 +881,12 @@ struct EmptySpace {
 Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, const std::vector<float>& params,
                                      const VolumeDesc& volume, float frame, float step, long rays,
                                      const VolumeRenderOptions& options) {
-  const IntervalProgram program(kernel.ir());
+  // Only what is bounded is evaluated: the opacity (or density) and the
+  // index, not the colour.
+  const OutputId seen = kernel.outputs().provides(OutputId::opacity) ? OutputId::opacity : OutputId::density;
+  std::vector<OutputId> bounded{seen};
+  if (kernel.outputs().provides(OutputId::ior)) bounded.push_back(OutputId::ior);
+  const IntervalProgram program(kernel.ir(), bounded);
   const UniformInputs uniforms = volume_uniforms(frame, step);
   // Per thread: a binding, and the enclosures of its last box.
   struct Bounding {
@@ -890,7 +895,7 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
   };
   tbb::enumerable_thread_specific<Bounding> threads;
   const OutputLayout& layout = program.outputs();
-  const int plane = layout.plane(layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density);
+  const int plane = layout.plane(seen);
   // A refracting graph's box may bend a ray wherever its index may differ
   // from 1, the index rays start in.
   const int ior_plane = layout.provides(OutputId::ior) ? layout.plane(OutputId::ior) : -1;

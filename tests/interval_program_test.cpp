@@ -240,6 +240,38 @@ TEST(IntervalProgram, AFloatReadAsAColourOutputRepeats) {
   }
 }
 
+// Bounding only some outputs evaluates what they depend on and leaves the
+// others' planes alone: the density comes out as with every output
+// bounded, and the colour (of a noise the density does not read) not at all.
+TEST(IntervalProgram, OutputsLeftOutAreNotEvaluated) {
+  Result<LoadedGraph> loaded = compile_graph_text(
+      testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "d", "op": "sphere", "in": {"p": "p", "radius": 1, "softness": 0.5}},
+                             {"id": "n", "op": "noise", "in": {"p": "p"}}, {"id": "c", "op": "mul", "in": {"a": "n", "b": "d"}})",
+                          R"("density": "d", "color": "c")", "", "volume"),
+      "partly.json");
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  IntervalProgram every(loaded->ir), density_only(loaded->ir, {OutputId::density});
+  BoundIntervalProgram all = every.bind(loaded->params.data(), UniformInputs{});
+  BoundIntervalProgram some = density_only.bind(loaded->params.data(), UniformInputs{});
+  SampleBox box;
+  for (int c = 0; c < 3; ++c) box.set(GlobalId::P, {0.3f, 0.9f}, c);
+  const OutputLayout& layout = every.outputs();
+  std::vector<Interval> from_all(static_cast<std::size_t>(layout.plane_count));
+  std::vector<Interval> from_some(from_all.size(), Interval{-7.0f, 7.0f});
+  all.evaluate(box, from_all.data());
+  some.evaluate(box, from_some.data());
+  const auto density = static_cast<std::size_t>(layout.plane(OutputId::density));
+  EXPECT_EQ(from_some[density].lo, from_all[density].lo);
+  EXPECT_EQ(from_some[density].hi, from_all[density].hi);
+  EXPECT_LT(from_all[density].lo, from_all[density].hi);
+  for (int c = 0; c < 3; ++c) {
+    const auto colour = static_cast<std::size_t>(layout.plane(OutputId::color, c));
+    EXPECT_EQ(from_some[colour].lo, -7.0f) << c;
+    EXPECT_EQ(from_some[colour].hi, 7.0f) << c;
+    EXPECT_NE(from_all[colour].lo, -7.0f) << c;
+  }
+}
+
 TEST(IntervalProgram, NoiseLiesWithinItsProvenRangeAndNarrowsWithTheBox) {
   Result<LoadedGraph> loaded = compile_graph_text(
       testing::graph_text(R"({"id": "p", "op": "P"}, {"id": "n", "op": "noise", "in": {"p": "p"}},
