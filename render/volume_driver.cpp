@@ -432,14 +432,14 @@ class Marcher {
   // at least `spacings` times the grid's ray spacing (a shadow map's normal
   // offset: from √2 spacings, the four light rays it interpolates pass on
   // the lit side of the point's tangent plane, where a lit surface does
-  // not shadow them). A light behind the point's surface lights nothing
-  // there (light_point passes it over, as the same test tells), so
-  // nothing is looked up or marched toward it.
+  // not shadow them). A light the point's surface faces away from lights
+  // nothing there (scene/lighting.h, `reaches`), so nothing is looked up or
+  // marched toward it.
   void shadow_from(const glm::vec3& point, const glm::vec3& normal, float offset, float spacings, std::size_t first,
                    std::vector<float>& transmittance, std::vector<ShadowRay>& rays, TileCounts& counts) const {
     for (std::size_t l = 0; l < scene_.lights().size(); ++l) {
       float distance = 0.0f;
-      if (glm::dot(normal, direction_to_light(scene_.lights()[l], point, &distance)) <= 0.0f) continue;
+      if (!reaches(normal, direction_to_light(scene_.lights()[l], point, &distance))) continue;
       if (l < grids_.size() && grids_[l]) {
         ++counts.shadow_lookups;
         const std::optional<float> looked_up =
@@ -694,8 +694,8 @@ class Marcher {
       }
     }
     run(samples, count, scratch);
-    step.density.assign(samples.outputs.plane(layout_.plane(OutputId::density)),
-                        samples.outputs.plane(layout_.plane(OutputId::density)) + count);
+    const float* densities = samples.outputs.plane(layout_.plane(OutputId::density));
+    step.density.assign(densities, densities + count);
     step.opacity.resize(count);
     const float* opacities = opacity_plane(layout_, samples);
     for (std::size_t i = 0; i < count; ++i) step.opacity[i] = unit_opacity(opacities[i]);

@@ -42,10 +42,10 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
     const Light& light = scene.lights()[index];
     const LightSeen here = seen ? seen[index] : light_seen(light, point.point, point.to_viewer);
     const glm::vec3& l = here.toward;
-    const float diffuse = glm::dot(n, l);
     // A light behind the geometric surface cannot reach it, whatever the
     // perturbed normal says.
-    if (diffuse <= 0.0f || glm::dot(point.geometric_normal, l) <= 0.0f) continue;
+    if (!reaches(n, l) || !reaches(point.geometric_normal, l)) continue;
+    const float diffuse = glm::dot(n, l);
     // Shadow rays start off the surface by an amount that scales with the
     // point's distance from the origin (float spacing grows with it).
     if (objects_shadow &&

@@ -5,6 +5,7 @@
 // Rhoades et al. 1992 with deferred shading).
 #pragma once
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "scene/scene.h"
@@ -51,6 +52,13 @@ float specular_exponent(float roughness);
 // the point sees it, where the caller has it (light_seen).
 glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
                       const float* light_transmittance = nullptr, const LightSeen* seen = nullptr);
+
+// Whether light arriving from unit direction `toward_light` reaches a
+// surface of normal `normal` (not from behind it): light_point passes
+// over a light that does not, so no shadow need be found toward it.
+inline bool reaches(const glm::vec3& normal, const glm::vec3& toward_light) {
+  return !(glm::dot(normal, toward_light) <= 0.0f);
+}
 
 // Unit direction from `point` toward `light`, and the distance to it
 // (infinite for directional lights).
