@@ -197,7 +197,6 @@ struct StepSamples {
   std::vector<std::size_t> soft;        // the samples lit by their normal
   std::vector<float> transmittance;     // lights per sample
   std::vector<ShadowRay> shadow_rays;
-  std::vector<char> done;  // the ray leaves the march after this step
 };
 
 // What one tile's march works in: the batches of its kernel calls (march
@@ -686,10 +685,14 @@ class Marcher {
       for (std::size_t i = 0; i < count; ++i) {
         MarchingRay& ray = *live[i];
         if (occupancy_) skip_empty_space(ray, scratch.counts);
-        step.t[i] = ray.sample_t();
-        step.at[i] = ray.at(step.t[i]);
+        // From locals: a float stored to a plane could be step.at's, so
+        // storing step.at[i] would read it back from memory.
+        const float t = ray.sample_t();
+        const glm::vec3 at = ray.at(t);
+        step.t[i] = t;
+        step.at[i] = at;
         step.normal[i] = -ray.frame.along;
-        points.store(i, step.at[i]);
+        points.store(i, at);
         views.store(i, ray.frame.along);
       }
     }
@@ -708,8 +711,8 @@ class Marcher {
     if (needs_gradients()) {
       step.soft.clear();
       for (std::size_t i = 0; i < count; ++i)
-        if (live[i]->segment >= 0 && step.density[i] > 0.0f && step.density[i] < 1.0f &&
-            (refracts_ || step.opacity[i] > 0.0f))
+        if (step.density[i] > 0.0f && step.density[i] < 1.0f && (refracts_ || step.opacity[i] > 0.0f) &&
+            live[i]->segment >= 0)
           step.soft.push_back(i);
       if (own_normals_)
         take_normals(samples, layout_, [&](std::size_t k) { return step.soft[k]; }, step);
@@ -724,7 +727,8 @@ class Marcher {
     if (layout_.provides(OutputId::color))
       for (int c = 0; c < 3; ++c) colors[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
     const std::size_t lights = scene_.lights().size();
-    step.done.resize(count);
+    const float opaque = 1.0f - options_.termination;
+    std::size_t kept = 0;  // the rays still live, moved to the front as they are found
     for (std::size_t i = 0; i < count; ++i) {
       MarchingRay& ray = *live[i];
       const float t = step.t[i];
@@ -761,11 +765,9 @@ class Marcher {
         const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
         if (bends(ray, ior)) refract(ray, t, step.normal[i], ior);
       }
-      step.done[i] = ray.segment_start() >= ray.exit || ray.alpha >= 1.0f - options_.termination;
+      const bool done = ray.segment_start() >= ray.exit || ray.alpha >= opaque;
+      if (!done) live[kept++] = &ray;
     }
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < count; ++i)
-      if (!step.done[i]) live[kept++] = live[i];
     live.resize(kept);
   }
 
