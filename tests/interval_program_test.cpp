@@ -300,6 +300,13 @@ TEST(IntervalProgram, NoiseLiesWithinItsProvenRangeAndNarrowsWithTheBox) {
   }
   EXPECT_LT(evaluate(2.37f, 0.0f).first.hi - evaluate(2.37f, 0.0f).first.lo, 1e-3f);
   EXPECT_LT(evaluate(2.37f, 0.01f).first.hi - evaluate(2.37f, 0.01f).first.lo, 0.15f);
+  // A cube 0.3 wide (over two cells along z) is bounded within +-0.7; one
+  // 0.6 wide, its widths adding up to more than max_enclosed_noise_width,
+  // by the range itself.
+  EXPECT_GT(evaluate(2.37f, 0.15f).first.lo, -0.7f);
+  EXPECT_LT(evaluate(2.37f, 0.15f).first.hi, 0.7f);
+  EXPECT_EQ(evaluate(2.37f, 0.3f).first.lo, -range);
+  EXPECT_EQ(evaluate(2.37f, 0.3f).first.hi, range);
 }
 
 // The use it is for: of a 16^3 grid of bricks over the noisy sphere's

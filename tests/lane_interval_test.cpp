@@ -11,6 +11,8 @@
 #include <random>
 
 #include "nodes/interval_frame.h"
+#include "nodes/noise_tables.h"
+#include "nodes/semantics/noise_intervals.h"
 
 namespace shadetree {
 namespace {
@@ -149,6 +151,28 @@ TEST(NoiseRange, WeightedSquaredOffsetsStayWithinAQuarter) {
     const double t = i / 100000.0, s = 1 - t;
     ASSERT_LE(drop_off(t) * t * t + drop_off(s) * s * s, 0.25 + 1e-12) << t;
     ASSERT_LE((1 - fade(t)) * t * t + fade(t) * s * s, 0.25 + 1e-12) << t;
+  }
+}
+
+// Noise over a box is bounded cell by cell while the box's widths add up
+// to at most max_enclosed_noise_width: a long thin box, as a ray's
+// neighbourhood is, keeps a useful bound; a box past the sum gets the
+// proven range, which its cells would nearly reach.
+TEST(NoiseRange, CellsAreEnumeratedWhileTheBoxIsNarrowOverall) {
+  const NoiseTables& tables = noise_tables(0);
+  const auto noise_over = [&](float cx, float wx, float wyz) {
+    const Interval x{cx - wx / 2, cx + wx / 2}, y{2.11f - wyz / 2, 2.11f + wyz / 2}, z{5.3f - wyz / 2, 5.3f + wyz / 2};
+    return lanes::noise_on_axes(tables, x, y, z, semantics::lattice_axis(x), semantics::lattice_axis(y),
+                                semantics::lattice_axis(z));
+  };
+  const float range = lanes::noise_bound + lanes::lattice_rounding_margin;
+  const float long_side = lanes::max_enclosed_noise_width - 0.1f;
+  for (float cx : {0.37f, 3.9f, 7.2f}) {
+    const Interval thin = noise_over(cx, long_side, 0.02f);
+    EXPECT_LT(thin.hi - thin.lo, 2.0f * range - 0.1f) << cx;
+    const Interval over = noise_over(cx, long_side, 0.2f);
+    EXPECT_EQ(over.lo, -range) << cx;
+    EXPECT_EQ(over.hi, range) << cx;
   }
 }
 

@@ -28,6 +28,12 @@ inline constexpr float noise_bound = 0.8660254f;
 inline constexpr float lattice_rounding_margin = 1e-4f;
 // Boxes over more cells than this are bounded by the proven range alone.
 inline constexpr int max_enclosed_noise_cells = 8;
+// Boxes whose widths (in cells) add up to more than this are bounded by
+// the proven range alone. Cell by cell, the enclosure's width grows about
+// as that sum does (widths 0.3, 0.02, 0.02: 0.4; 0.3 each: 1.16) until
+// it is the whole range: there it tells next to nothing more, at up to 8
+// cells' cost (docs/architecture.md, "How tight").
+inline constexpr float max_enclosed_noise_width = 1.5f;
 // Beyond this, cells are not enumerated (a float step may exceed a cell).
 inline constexpr float max_enclosed_noise_coordinate = 8388608.0f;
 
@@ -55,7 +61,7 @@ inline Interval lattice_range(Interval x, Interval y, Interval z, Interval w, fl
 template <int D, class OverCell>
 Interval lattice_over_cells(const Interval (&box)[D], Interval range, OverCell over_cell) {
   if (is_everything(range)) return range;
-  float first[D];
+  float first[D], width = 0.0f;
   int count[D], cells = 1;
   for (int a = 0; a < D; ++a) {
     if (std::fabs(box[a].lo) >= max_enclosed_noise_coordinate || std::fabs(box[a].hi) >= max_enclosed_noise_coordinate)
@@ -64,8 +70,9 @@ Interval lattice_over_cells(const Interval (&box)[D], Interval range, OverCell o
     count[a] = static_cast<int>(std::floor(box[a].hi) - first[a]) + 1;
     if (count[a] > max_enclosed_noise_cells) return range;
     cells *= count[a];
+    width += box[a].hi - box[a].lo;
   }
-  if (cells > max_enclosed_noise_cells) return range;
+  if (cells > max_enclosed_noise_cells || width > max_enclosed_noise_width) return range;
   Interval result{infinity, -infinity};
   for (int cell = 0; cell < cells; ++cell) {
     float corner[D];
@@ -75,6 +82,8 @@ Interval lattice_over_cells(const Interval (&box)[D], Interval range, OverCell o
       fraction[a] = {std::max(box[a].lo, corner[a]) - corner[a], std::min(box[a].hi, corner[a] + 1.0f) - corner[a]};
     }
     result = hull(result, over_cell(corner, fraction));
+    // The rest of the cells cannot narrow what the proven range bounds.
+    if (result.lo - lattice_rounding_margin <= range.lo && result.hi + lattice_rounding_margin >= range.hi) return range;
   }
   return meet(widened(result, lattice_rounding_margin), range);
 }
