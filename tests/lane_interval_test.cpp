@@ -155,9 +155,9 @@ TEST(NoiseRange, WeightedSquaredOffsetsStayWithinAQuarter) {
 }
 
 // Noise over a box is bounded cell by cell while the box's widths add up
-// to at most max_enclosed_noise_width: a long thin box, as a ray's
-// neighbourhood is, keeps a useful bound; a box past the sum gets the
-// proven range, which its cells would nearly reach.
+// to at most max_enclosed_noise_width: a long thin box (a cell of the
+// bounds under a noise of stretched P) keeps a useful bound; a box past
+// the sum gets the proven range, which its cells would nearly reach.
 TEST(NoiseRange, CellsAreEnumeratedWhileTheBoxIsNarrowOverall) {
   const NoiseTables& tables = noise_tables(0);
   const auto noise_over = [&](float cx, float wx, float wyz) {
