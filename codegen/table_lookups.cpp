@@ -15,29 +15,31 @@
 namespace shadetree {
 namespace {
 
-// One lookup per lane: extract the address, load, insert.
-llvm::Value* per_lane_lookup(llvm::IRBuilder<>& builder, llvm::Type* element, llvm::Value* addresses, int width) {
-  llvm::Value* result = llvm::PoisonValue::get(llvm::FixedVectorType::get(element, static_cast<unsigned>(width)));
+// A load of `loaded` (4-byte aligned) at entry `index` of a table of
+// `element`s, in each lane, as the strategy does it where no register
+// lookup applies. One lane at a time, the lane's index is moved out, not
+// its address, and the load adds the table's address: a vector of
+// addresses cost three vector instructions for each half of the lanes
+// (widen, scale, add) before the same moves. An index is never negative
+// (every table's is masked or clamped into it), so moving it out
+// zero-extends it for free.
+llvm::Value* memory_lookup(llvm::IRBuilder<>& builder, GatherStrategy strategy, llvm::Type* loaded, llvm::Type* element,
+                           llvm::Value* table, llvm::Value* index, int width) {
+  auto* vector = llvm::FixedVectorType::get(loaded, static_cast<unsigned>(width));
+  if (strategy != GatherStrategy::per_lane)
+    return builder.CreateMaskedGather(vector, builder.CreateInBoundsGEP(element, table, index), llvm::Align(4));
+  llvm::Value* result = llvm::PoisonValue::get(vector);
   for (int lane = 0; lane < width; ++lane) {
-    llvm::Value* address = builder.CreateExtractElement(addresses, lane);
-    llvm::Value* loaded = builder.CreateAlignedLoad(element, address, llvm::Align(4));
-    result = builder.CreateInsertElement(result, loaded, lane);
+    llvm::Value* entry = builder.CreateZExt(builder.CreateExtractElement(index, lane), builder.getInt64Ty());
+    llvm::Value* address = builder.CreateInBoundsGEP(element, table, entry);
+    result = builder.CreateInsertElement(result, builder.CreateAlignedLoad(loaded, address, llvm::Align(4)), lane);
   }
   return result;
 }
 
-// A load of `element` at each lane's address (4-byte aligned), as the
-// strategy does it where no register lookup applies.
-llvm::Value* memory_lookup_at(llvm::IRBuilder<>& builder, GatherStrategy strategy, llvm::Type* element,
-                              llvm::Value* addresses, int width) {
-  if (strategy == GatherStrategy::per_lane) return per_lane_lookup(builder, element, addresses, width);
-  auto* vector = llvm::FixedVectorType::get(element, static_cast<unsigned>(width));
-  return builder.CreateMaskedGather(vector, addresses, llvm::Align(4));
-}
-
 llvm::Value* memory_lookup(llvm::IRBuilder<>& builder, GatherStrategy strategy, llvm::Type* element, llvm::Value* table,
                            llvm::Value* index, int width) {
-  return memory_lookup_at(builder, strategy, element, builder.CreateInBoundsGEP(element, table, index), width);
+  return memory_lookup(builder, strategy, element, element, table, index, width);
 }
 
 // How a kernel of one width looks up a 256-entry table.
@@ -72,9 +74,8 @@ std::pair<llvm::Value*, llvm::Value*> pair_lookup(llvm::IRBuilder<>& builder, ll
             lookup256(builder, module, how, is_float, table, next_index, width)};
   }
   llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
-  llvm::Value* addresses = builder.CreateInBoundsGEP(element, table, index);
   llvm::Value* pairs =
-      builder.CreateBitCast(memory_lookup_at(builder, how.memory, builder.getInt64Ty(), addresses, width),
+      builder.CreateBitCast(memory_lookup(builder, how.memory, builder.getInt64Ty(), element, table, index, width),
                             llvm::FixedVectorType::get(element, static_cast<unsigned>(2 * width)));
   // The entry at index is the pair's first half in memory: its low half on
   // a little-endian target.
