@@ -116,24 +116,27 @@ std::vector<int> within_each_quad(int width, std::array<int, 4> pattern) {
   return mask;
 }
 
-// Gradient components from the interleaved table, one lane at a time:
-// the (x, y, z, 0) of entry index, and with `knots` 2 of index + 1 too,
-// are 16-byte loads. Lanes l, l + 4, l + 8, ... are put side by side (one
-// register, a 128-bit quarter each) and four such registers transposed
-// within each quarter, as the four-by-four transpose of SSE code does.
-// Returns x at each knot, then y, then z.
-std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm::Value* interleaved,
-                                                llvm::Value* index, int width, int knots) {
+// A lane's (x, y, z, 0) entries of the interleaved gradient table from
+// `slot` on (an i64), one 16-byte load per knot: [knot].
+std::vector<llvm::Value*> interleaved_entries(llvm::IRBuilder<>& builder, llvm::Value* interleaved, llvm::Value* slot,
+                                              int knots) {
   auto* quad = llvm::FixedVectorType::get(builder.getFloatTy(), 4);
-  llvm::Value* byte_offsets = builder.CreateShl(index, builder.CreateVectorSplat(width, builder.getInt32(4)));
-  std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));  // [knot][lane]: (x, y, z, 0)
-  for (int lane = 0; lane < width; ++lane) {
-    llvm::Value* offset = builder.CreateZExt(builder.CreateExtractElement(byte_offsets, lane), builder.getInt64Ty());
-    llvm::Value* at = builder.CreateInBoundsGEP(builder.getInt8Ty(), interleaved, offset);
-    for (int knot = 0; knot < knots; ++knot)
-      entries[static_cast<std::size_t>(knot)].push_back(builder.CreateAlignedLoad(
-          quad, builder.CreateConstInBoundsGEP1_32(builder.getInt8Ty(), at, 16 * knot), llvm::Align(16)));
-  }
+  llvm::Value* at = builder.CreateInBoundsGEP(quad, interleaved, slot);
+  std::vector<llvm::Value*> entries;
+  for (int knot = 0; knot < knots; ++knot)
+    entries.push_back(
+        builder.CreateAlignedLoad(quad, builder.CreateConstInBoundsGEP1_32(quad, at, knot), llvm::Align(16)));
+  return entries;
+}
+
+// The gradient components of `entries` ([knot][lane]: a lane's (x, y, z,
+// 0), as interleaved_entries reads them): lanes l, l + 4, l + 8, ... are
+// put side by side (one register, a 128-bit quarter each) and four such
+// registers transposed within each quarter, as the four-by-four transpose
+// of SSE code does. Returns x at each knot, then y, then z.
+std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
+                                               const std::vector<std::vector<llvm::Value*>>& entries, int width) {
+  const int knots = static_cast<int>(entries.size());
   auto concatenate = [&](std::vector<llvm::Value*> parts) {
     while (parts.size() > 1) {
       std::vector<llvm::Value*> joined;
@@ -168,6 +171,52 @@ std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm
   return components;
 }
 
+// Whether gradients are read from the interleaved table: where memory is
+// read lane by lane, one load a lane gives a knot's three components.
+bool reads_interleaved(const Lookups256& how) {
+  return !how.tables_in_registers && how.memory == GatherStrategy::per_lane;
+}
+
+llvm::Value* noise_table(llvm::IRBuilder<>& builder, llvm::Value* tables, std::size_t offset) {
+  return builder.CreateConstInBoundsGEP1_64(builder.getInt8Ty(), tables, offset);
+}
+
+// Stores `vectors` one after the other from `out` and returns.
+void store_vectors(llvm::IRBuilder<>& builder, const std::vector<llvm::Value*>& vectors, llvm::Value* out) {
+  for (std::size_t v = 0; v < vectors.size(); ++v)
+    builder.CreateStore(vectors[v], builder.CreateConstInBoundsGEP1_64(vectors[v]->getType(), out, v));
+  builder.CreateRetVoid();
+}
+
+// The hashed gradients of the knots at slot `index` (and with `knots` 2
+// at index + 1): x at each knot, then y, then z; from the interleaved
+// table or by lookups of each component's table.
+std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how,
+                                         llvm::Value* tables, llvm::Value* index, int width, int knots) {
+  if (reads_interleaved(how)) {
+    llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
+    std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));
+    for (int lane = 0; lane < width; ++lane) {
+      llvm::Value* slot = builder.CreateZExt(builder.CreateExtractElement(index, lane), builder.getInt64Ty());
+      const std::vector<llvm::Value*> loaded = interleaved_entries(builder, interleaved, slot, knots);
+      for (int knot = 0; knot < knots; ++knot) entries[static_cast<std::size_t>(knot)].push_back(loaded[knot]);
+    }
+    return transposed_gradients(builder, entries, width);
+  }
+  std::vector<llvm::Value*> components;
+  for (std::size_t offset : {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
+                             offsetof(NoiseTables, hashed_gradient_z)}) {
+    if (knots == 2) {
+      const auto [at, next] =
+          pair_lookup(builder, module, how, true, noise_table(builder, tables, offset), index, width);
+      components.insert(components.end(), {at, next});
+    } else {
+      components.push_back(lookup256(builder, module, how, true, noise_table(builder, tables, offset), index, width));
+    }
+  }
+  return components;
+}
+
 // st_gather256_gradients_w<width>(out, tables, index), one knot's
 // gradient, and st_gather256_gradient_pairs_w<width>(out, tables, index),
 // a knot row's (index and index + 1): from the three hashed gradient
@@ -182,30 +231,132 @@ void define_gradient_lookup(llvm::Module& module, const Lookups256& how, int wid
   auto args = function->arg_begin();
   llvm::Value* out = &*args++;
   llvm::Value* tables = &*args++;
-  auto* vector = llvm::FixedVectorType::get(builder.getFloatTy(), static_cast<unsigned>(width));
   llvm::Value* index =
       builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
-  auto field = [&](std::size_t offset) {
-    return builder.CreateConstInBoundsGEP1_64(builder.getInt8Ty(), tables, offset);
+  store_vectors(builder, knot_gradients(builder, module, how, tables, index, width, knots), out);
+}
+
+// (index + hash) mod n, the slot a hash reaches from an index: vectors of
+// `width` lanes or single lanes.
+llvm::Value* slot_of(llvm::IRBuilder<>& builder, llvm::Value* index, llvm::Value* hash, int width) {
+  llvm::Value* sum = builder.CreateAdd(index, hash);
+  llvm::Value* last = builder.getInt32(noise_table_size - 1);
+  return builder.CreateAnd(sum, sum->getType()->isVectorTy() ? builder.CreateVectorSplat(width, last) : last);
+}
+
+// The four rows of knots of st_gather256_knot_rows hashed a lane at a
+// time in general registers: hashed in vector registers, every level's
+// slots were moved out lane by lane and the pairs read there put back,
+// seven moves out a lane, and such moves were an octave's bound on Zen 3
+// (docs/architecture.md). A loop over the lanes loads each lane's indices
+// from `cell_at`, where the caller stored them, hashes them and keeps its
+// rows' slots on the stack; then each row's entries are read lane by
+// lane, each slot loaded back (a load, not a move out of a vector
+// register), and transposed. Written out for every lane instead, the hash
+// ran plain noise faster still (about 1.5x) but compiled the noise graphs
+// 10-20% slower (turbulence, marble, wool); reading the entries inside
+// the loop meant storing and loading them again for the transposes,
+// which lost more than the loop saved.
+std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
+                                                llvm::Value* tables, llvm::Value* cell_at, int width) {
+  llvm::Type* int32 = builder.getInt32Ty();
+  llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
+  llvm::Value* slots = builder.CreateAlloca(llvm::ArrayType::get(int32, static_cast<std::uint64_t>(4 * width)));
+  const auto at_lane = [&](llvm::Value* lane, int row) {  // [row][lane]
+    return builder.CreateAdd(lane, builder.getInt64(static_cast<std::uint64_t>(row * width)));
   };
+  // The entry at a slot is its pair's first half in memory.
+  const bool little_endian = module.getDataLayout().isLittleEndian();
+  const auto pair = [&](llvm::Value* at) {
+    llvm::Value* address = builder.CreateInBoundsGEP(int32, permutation, builder.CreateZExt(at, builder.getInt64Ty()));
+    llvm::Value* both = builder.CreateAlignedLoad(builder.getInt64Ty(), address, llvm::Align(4));
+    llvm::Value* low = builder.CreateTrunc(both, int32);
+    llvm::Value* high = builder.CreateTrunc(builder.CreateLShr(both, 32), int32);
+    return little_endian ? std::array{low, high} : std::array{high, low};
+  };
+  llvm::Function* function = builder.GetInsertBlock()->getParent();
+  llvm::BasicBlock* before = builder.GetInsertBlock();
+  auto* lanes = llvm::BasicBlock::Create(module.getContext(), "hash_lanes", function);
+  auto* hashed = llvm::BasicBlock::Create(module.getContext(), "lanes_hashed", function);
+  builder.CreateBr(lanes);
+  builder.SetInsertPoint(lanes);
+  llvm::PHINode* lane = builder.CreatePHI(builder.getInt64Ty(), 2);
+  lane->addIncoming(builder.getInt64(0), before);
+  std::array<llvm::Value*, 3> index;
+  for (int axis = 0; axis < 3; ++axis)
+    index[static_cast<std::size_t>(axis)] = builder.CreateAlignedLoad(
+        int32, builder.CreateInBoundsGEP(int32, cell_at, at_lane(lane, axis)), llvm::Align(4));
+  const auto hash_k = pair(slot_of(builder, index[2], builder.getInt32(0), width));
+  for (int dk = 0; dk < 2; ++dk) {
+    const auto hash_jk = pair(slot_of(builder, index[1], hash_k[static_cast<std::size_t>(dk)], width));
+    for (int dj = 0; dj < 2; ++dj)
+      builder.CreateAlignedStore(slot_of(builder, index[0], hash_jk[static_cast<std::size_t>(dj)], width),
+                                 builder.CreateInBoundsGEP(int32, slots, at_lane(lane, 2 * dk + dj)), llvm::Align(4));
+  }
+  llvm::Value* next = builder.CreateAdd(lane, builder.getInt64(1));
+  lane->addIncoming(next, lanes);
+  builder.CreateCondBr(builder.CreateICmpULT(next, builder.getInt64(static_cast<std::uint64_t>(width))), lanes, hashed);
+  builder.SetInsertPoint(hashed);
+  llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
   std::vector<llvm::Value*> components;
-  if (!how.tables_in_registers && how.memory == GatherStrategy::per_lane) {
-    components =
-        interleaved_gradients(builder, field(offsetof(NoiseTables, hashed_gradient_xyz0)), index, width, knots);
-  } else {
-    for (std::size_t offset : {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
-                               offsetof(NoiseTables, hashed_gradient_z)}) {
-      if (knots == 2) {
-        const auto [at, next] = pair_lookup(builder, module, how, true, field(offset), index, width);
-        components.insert(components.end(), {at, next});
-      } else {
-        components.push_back(lookup256(builder, module, how, true, field(offset), index, width));
-      }
+  for (int row = 0; row < 4; ++row) {
+    std::vector<std::vector<llvm::Value*>> entries(2);  // [knot][lane]
+    for (int l = 0; l < width; ++l) {
+      llvm::Value* row_slot = builder.CreateAlignedLoad(
+          int32, builder.CreateConstInBoundsGEP1_64(int32, slots, static_cast<std::uint64_t>(row * width + l)),
+          llvm::Align(4));
+      const std::vector<llvm::Value*> loaded =
+          interleaved_entries(builder, interleaved, builder.CreateZExt(row_slot, builder.getInt64Ty()), 2);
+      for (std::size_t knot = 0; knot < 2; ++knot) entries[knot].push_back(loaded[knot]);
+    }
+    const std::vector<llvm::Value*> row_components = transposed_gradients(builder, entries, width);
+    components.insert(components.end(), row_components.begin(), row_components.end());
+  }
+  return components;
+}
+
+// The same rows hashed in vector registers, by the strategy's lookups.
+std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
+                                                  const Lookups256& how, llvm::Value* tables, llvm::Value* cell_at,
+                                                  int width) {
+  auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
+  std::array<llvm::Value*, 3> index;
+  for (int axis = 0; axis < 3; ++axis)
+    index[static_cast<std::size_t>(axis)] =
+        builder.CreateLoad(index_type, builder.CreateConstInBoundsGEP1_32(index_type, cell_at, axis));
+  llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
+  const auto hash_k = pair_lookup(builder, module, how, false, permutation,
+                                  slot_of(builder, index[2], llvm::Constant::getNullValue(index_type), width), width);
+  std::vector<llvm::Value*> components;
+  for (llvm::Value* k_hash : {hash_k.first, hash_k.second}) {
+    const auto hash_jk =
+        pair_lookup(builder, module, how, false, permutation, slot_of(builder, index[1], k_hash, width), width);
+    for (llvm::Value* jk_hash : {hash_jk.first, hash_jk.second}) {
+      const std::vector<llvm::Value*> row =
+          knot_gradients(builder, module, how, tables, slot_of(builder, index[0], jk_hash, width), width, 2);
+      components.insert(components.end(), row.begin(), row.end());
     }
   }
-  for (std::size_t c = 0; c < components.size(); ++c)
-    builder.CreateStore(components[c], builder.CreateConstInBoundsGEP1_64(vector, out, c));
-  builder.CreateRetVoid();
+  return components;
+}
+
+// st_gather256_knot_rows_w<width>(out, tables, cell): the gradients of
+// the four rows of knots around lattice cell (i, j, k) = cell[0..2], as
+// nodes/semantics/noise.h's for_each_noise_row hashes them: row 2 dk + dj
+// at slot (i + phi(j + phi(k)[dk])[dj]) mod n, its two knots' x, y and z.
+// Lane by lane where memory is read lane by lane.
+void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int width) {
+  llvm::Function* function = module.getFunction("st_gather256_knot_rows_w" + std::to_string(width));
+  if (!function || !function->isDeclaration()) return;
+  llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
+  auto args = function->arg_begin();
+  llvm::Value* out = &*args++;
+  llvm::Value* tables = &*args++;
+  llvm::Value* cell_at = &*args;
+  store_vectors(builder,
+                reads_interleaved(how) ? lane_hashed_knot_rows(builder, module, tables, cell_at, width)
+                                       : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width),
+                out);
 }
 
 // st_gather_small_f32_w<width>(out, table, size, index): in registers
@@ -253,6 +404,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
     for (int knots : {1, 2}) define_gradient_lookup(module, how, width, knots);
+    define_knot_rows_lookup(module, how, width);
     for (bool is_float : {true, false}) {
       define_pair_lookup(module, how, width, is_float);
       for (bool table256 : {false, true}) {

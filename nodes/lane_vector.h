@@ -22,8 +22,10 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // target: a hardware gather, one load per lane, or permutes of registers.
 // gather256_gradients and gather256_gradient_pairs, the three hashed
 // gradient tables at index (and with pairs at index + 1: out is x at both,
-// then y, then z), exist only in this lane (nodes/semantics/noise.h asks
-// whether they do).
+// then y, then z), and gather256_knot_rows, those pairs of the four rows
+// of knots around lattice cell (i, j, k) (nodes/semantics/noise.h,
+// for_each_noise_row: out is row 0's six, then row 1's, ...), exist only
+// in this lane (nodes/semantics/noise.h asks whether they do).
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
@@ -37,7 +39,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
                                            const intv<W>* index);                                           \
   extern "C" void st_gather256_gradients_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* index); \
   extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
-                                                   const intv<W>* index);
+                                                   const intv<W>* index);                                     \
+  extern "C" void st_gather256_knot_rows_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
@@ -108,6 +111,16 @@ SHADETREE_VECTOR_GATHERS(16)
     floatv<W> result[6];                                                                                     \
     st_gather256_gradient_pairs_w##W(result, &tables, &index);                                               \
     return {{{result[0], result[1]}, {result[2], result[3]}, {result[4], result[5]}}};                       \
+  }                                                                                                          \
+  inline std::array<std::array<std::array<floatv<W>, 2>, 3>, 4> gather256_knot_rows(                          \
+      const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k) {                                          \
+    const intv<W> cell[3] = {i, j, k};                                                                       \
+    floatv<W> r[24];                                                                                         \
+    st_gather256_knot_rows_w##W(r, &tables, cell);                                                           \
+    return {{{{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}}},                                                   \
+             {{{r[6], r[7]}, {r[8], r[9]}, {r[10], r[11]}}},                                                 \
+             {{{r[12], r[13]}, {r[14], r[15]}, {r[16], r[17]}}},                                             \
+             {{{r[18], r[19]}, {r[20], r[21]}, {r[22], r[23]}}}}};                                           \
   }
 
 SHADETREE_VECTOR_LANES(4)

@@ -132,6 +132,16 @@ struct ReadsInterleavedGradients<
     I, std::void_t<decltype(gather256_gradient_pairs(std::declval<const NoiseTables&>(), std::declval<I>()))>>
     : std::true_type {};
 
+// Whether lanes of index type I look up the gradients of a lattice cell's
+// four rows of knots in one go (gather256_knot_rows, which only
+// nodes/lane_vector.h declares).
+template <class I, class = void>
+struct LooksUpKnotRows : std::false_type {};
+template <class I>
+struct LooksUpKnotRows<I, std::void_t<decltype(gather256_knot_rows(std::declval<const NoiseTables&>(),
+                                                                   std::declval<I>(), std::declval<I>(),
+                                                                   std::declval<I>()))>> : std::true_type {};
+
 // The two knots (0, j, k) and (1, j, k) of a row along x, at slots
 // (i + phi(j + phi(k))) mod n.
 template <class Axis, class I>
@@ -158,6 +168,23 @@ struct KnotRow {
   }
 };
 
+// The offsets from p of the 2^3 knots around it, a row along x at a
+// time, in the order k, then j: visit(dk, dj, u, v, w) with (u[i], v, w) =
+// p - (i, j, k).
+//
+// The knot loops are written out (each_of_0_and_1): a kernel's optimizer
+// left the outer one rolled around a body too large to unroll by its
+// measure, which kept the noise tables spilled and reloaded per knot.
+template <class F, class Axis, class Visit>
+void for_each_row_offset(F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az, Visit visit) {
+  F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
+  const std::array<F, 2> u{fx - 0.0f, fx - 1.0f};
+  each_of_0_and_1([&](auto dk) {
+    F w = fz - float(dk);
+    each_of_0_and_1([&](auto dj) { visit(dk, dj, u, fy - float(dj), w); });
+  });
+}
+
 // Visits the 2^3 knots around p (1989 section 2.3) a row at a time, in the
 // order k, j, then i: visit(row, u, v, w) with the knots' offsets (u[i],
 // v, w) = p - (i, j, k), each knot's gradient being
@@ -165,24 +192,36 @@ struct KnotRow {
 // how cells hash: as they are, or wrapped by a period. `outer_hash`, added
 // to k before its phi, is how a fourth axis extends the hash
 // (nodes/semantics/noise4.h); 0 for 3D.
-//
-// The knot loops are written out (each_of_0_and_1): a kernel's optimizer
-// left the outer one rolled around a body too large to unroll by its
-// measure, which kept the noise tables spilled and reloaded per knot.
 template <class F, class Axis, class Visit>
 void for_each_noise_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az,
                         IntOf<F> outer_hash, Visit visit) {
-  F fx = x - ax.corner(), fy = y - ay.corner(), fz = z - az.corner();
-  const std::array<F, 2> u{fx - 0.0f, fx - 1.0f};
   const auto hash_k = entries_at_cells(tables.permutation.data(), az, outer_hash);  // phi(k + outer_hash)
-  each_of_0_and_1([&](auto dk) {
-    F w = fz - float(dk);
-    const auto hash_jk = entries_at_cells(tables.permutation.data(), ay, hash_k[dk]);  // phi(j + phi(k))
-    each_of_0_and_1([&](auto dj) {
-      F v = fy - float(dj);
-      visit(KnotRow<Axis, IntOf<F>>{ax, hash_jk[dj]}, u, v, w);
-    });
+  const std::array hash_jk{entries_at_cells(tables.permutation.data(), ay, hash_k[0]),  // phi(j + phi(k))
+                           entries_at_cells(tables.permutation.data(), ay, hash_k[1])};
+  for_each_row_offset(x, y, z, ax, ay, az, [&](auto dk, auto dj, const std::array<F, 2>& u, F v, F w) {
+    visit(KnotRow<Axis, IntOf<F>>{ax, hash_jk[dk][dj]}, u, v, w);
   });
+}
+
+// The rows of for_each_noise_row (3D) with their knots' gradients:
+// visit(gradients, u, v, w), the gradients as KnotRow::gradients gives
+// them. On the lattice, lanes that can look up all four rows in one go do
+// (the JIT, reading memory lane by lane, then hashes each lane in general
+// registers: codegen/table_lookups.cpp).
+template <class F, class Axis, class Visit>
+void for_each_noise_gradient_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay,
+                                 const Axis& az, Visit visit) {
+  if constexpr (Axis::next_cell_hashes_next && LooksUpKnotRows<IntOf<F>>::value) {
+    const auto rows = gather256_knot_rows(tables, ax.index(0), ay.index(0), az.index(0));
+    for_each_row_offset(x, y, z, ax, ay, az, [&](auto dk, auto dj, const std::array<F, 2>& u, F v, F w) {
+      visit(rows[2 * dk + dj], u, v, w);
+    });
+  } else {
+    for_each_noise_row(tables, x, y, z, ax, ay, az, IntOf<F>{} + 0,
+                       [&](const auto& row, const std::array<F, 2>& u, F v, F w) {
+                         visit(row.gradients(tables), u, v, w);
+                       });
+  }
 }
 
 // The same knots one at a time: visit(slot, u, v, w).
@@ -210,14 +249,14 @@ void for_each_noise_knot(const NoiseTables& tables, F x, F y, F z, Visit visit) 
 template <class F, class Axis>
 F noise_on_axes(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay, const Axis& az) {
   F sum = splat<F>(0.0f);
-  for_each_noise_row(tables, x, y, z, ax, ay, az, IntOf<F>{} + 0,
-                     [&](const auto& row, const std::array<F, 2>& u, F v, F w) {
-                       const auto [gx, gy, gz] = row.gradients(tables);
-                       each_of_0_and_1([&](auto di) {
-                         F slope = gx[di] * u[di] + gy[di] * v + gz[di] * w;
-                         sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(w) * slope;
-                       });
-                     });
+  for_each_noise_gradient_row(tables, x, y, z, ax, ay, az,
+                              [&](const auto& gradients, const std::array<F, 2>& u, F v, F w) {
+                                const auto& [gx, gy, gz] = gradients;
+                                each_of_0_and_1([&](auto di) {
+                                  F slope = gx[di] * u[di] + gy[di] * v + gz[di] * w;
+                                  sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(w) * slope;
+                                });
+                              });
   return sum;
 }
 
@@ -239,19 +278,19 @@ F pnoise(const NoiseTables& tables, F x, F y, F z, F px, F py, F pz) {
 template <class F>
 Vec3<F> dnoise(const NoiseTables& tables, F x, F y, F z) {
   Vec3<F> sum{splat<F>(0.0f), splat<F>(0.0f), splat<F>(0.0f)};
-  for_each_noise_row(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z), IntOf<F>{} + 0,
-                     [&](const auto& row, const std::array<F, 2>& knot_u, F v, F w) {
-                       const auto [row_gx, row_gy, row_gz] = row.gradients(tables);
-                       each_of_0_and_1([&](auto di) {
-                         F u = knot_u[di], gx = row_gx[di], gy = row_gy[di], gz = row_gz[di];
-                         F slope = gx * u + gy * v + gz * w;
-                         F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
-                         F weight = wu * wv * ww;
-                         sum.x = sum.x + noise_weight_derivative(u) * wv * ww * slope + weight * gx;
-                         sum.y = sum.y + wu * noise_weight_derivative(v) * ww * slope + weight * gy;
-                         sum.z = sum.z + wu * wv * noise_weight_derivative(w) * slope + weight * gz;
-                       });
-                     });
+  for_each_noise_gradient_row(tables, x, y, z, lattice_axis(x), lattice_axis(y), lattice_axis(z),
+                              [&](const auto& gradients, const std::array<F, 2>& knot_u, F v, F w) {
+                                const auto& [row_gx, row_gy, row_gz] = gradients;
+                                each_of_0_and_1([&](auto di) {
+                                  F u = knot_u[di], gx = row_gx[di], gy = row_gy[di], gz = row_gz[di];
+                                  F slope = gx * u + gy * v + gz * w;
+                                  F wu = noise_weight(u), wv = noise_weight(v), ww = noise_weight(w);
+                                  F weight = wu * wv * ww;
+                                  sum.x = sum.x + noise_weight_derivative(u) * wv * ww * slope + weight * gx;
+                                  sum.y = sum.y + wu * noise_weight_derivative(v) * ww * slope + weight * gy;
+                                  sum.z = sum.z + wu * wv * noise_weight_derivative(w) * slope + weight * gz;
+                                });
+                              });
   return sum;
 }
 
