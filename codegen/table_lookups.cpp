@@ -188,21 +188,30 @@ void store_vectors(llvm::IRBuilder<>& builder, const std::vector<llvm::Value*>& 
   builder.CreateRetVoid();
 }
 
+// The gradients of the knots at each lane's slot (and with `knots` 2 at
+// the slot + 1) from the interleaved table, one lane at a time:
+// slot_of_lane(l) is lane l's slot, an i32. x at each knot, then y, then z.
+template <class SlotOfLane>
+std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm::Value* tables, int width, int knots,
+                                                SlotOfLane slot_of_lane) {
+  llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
+  std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));  // [knot][lane]
+  for (int lane = 0; lane < width; ++lane) {
+    llvm::Value* slot = builder.CreateZExt(slot_of_lane(lane), builder.getInt64Ty());
+    const std::vector<llvm::Value*> loaded = interleaved_entries(builder, interleaved, slot, knots);
+    for (int knot = 0; knot < knots; ++knot) entries[static_cast<std::size_t>(knot)].push_back(loaded[knot]);
+  }
+  return transposed_gradients(builder, entries, width);
+}
+
 // The hashed gradients of the knots at slot `index` (and with `knots` 2
 // at index + 1): x at each knot, then y, then z; from the interleaved
 // table or by lookups of each component's table.
 std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how,
                                          llvm::Value* tables, llvm::Value* index, int width, int knots) {
-  if (reads_interleaved(how)) {
-    llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
-    std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));
-    for (int lane = 0; lane < width; ++lane) {
-      llvm::Value* slot = builder.CreateZExt(builder.CreateExtractElement(index, lane), builder.getInt64Ty());
-      const std::vector<llvm::Value*> loaded = interleaved_entries(builder, interleaved, slot, knots);
-      for (int knot = 0; knot < knots; ++knot) entries[static_cast<std::size_t>(knot)].push_back(loaded[knot]);
-    }
-    return transposed_gradients(builder, entries, width);
-  }
+  if (reads_interleaved(how))
+    return interleaved_gradients(builder, tables, width, knots,
+                                 [&](int lane) { return builder.CreateExtractElement(index, lane); });
   std::vector<llvm::Value*> components;
   for (std::size_t offset : {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
                              offsetof(NoiseTables, hashed_gradient_z)}) {
@@ -262,8 +271,9 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   llvm::Type* int32 = builder.getInt32Ty();
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
   llvm::Value* slots = builder.CreateAlloca(llvm::ArrayType::get(int32, static_cast<std::uint64_t>(4 * width)));
-  const auto at_lane = [&](llvm::Value* lane, int row) {  // [row][lane]
-    return builder.CreateAdd(lane, builder.getInt64(static_cast<std::uint64_t>(row * width)));
+  // Element `lane` of group `group` of a [group][lane] block of i32s.
+  const auto in_group = [&](int group, auto lane) {
+    return builder.CreateAdd(builder.getInt64(static_cast<std::uint64_t>(group * width)), lane);
   };
   // The entry at a slot is its pair's first half in memory.
   const bool little_endian = module.getDataLayout().isLittleEndian();
@@ -285,31 +295,24 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   std::array<llvm::Value*, 3> index;
   for (int axis = 0; axis < 3; ++axis)
     index[static_cast<std::size_t>(axis)] = builder.CreateAlignedLoad(
-        int32, builder.CreateInBoundsGEP(int32, cell_at, at_lane(lane, axis)), llvm::Align(4));
+        int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(axis, lane)), llvm::Align(4));
   const auto hash_k = pair(slot_of(builder, index[2], builder.getInt32(0), width));
   for (int dk = 0; dk < 2; ++dk) {
     const auto hash_jk = pair(slot_of(builder, index[1], hash_k[static_cast<std::size_t>(dk)], width));
     for (int dj = 0; dj < 2; ++dj)
       builder.CreateAlignedStore(slot_of(builder, index[0], hash_jk[static_cast<std::size_t>(dj)], width),
-                                 builder.CreateInBoundsGEP(int32, slots, at_lane(lane, 2 * dk + dj)), llvm::Align(4));
+                                 builder.CreateInBoundsGEP(int32, slots, in_group(2 * dk + dj, lane)), llvm::Align(4));
   }
   llvm::Value* next = builder.CreateAdd(lane, builder.getInt64(1));
   lane->addIncoming(next, lanes);
   builder.CreateCondBr(builder.CreateICmpULT(next, builder.getInt64(static_cast<std::uint64_t>(width))), lanes, hashed);
   builder.SetInsertPoint(hashed);
-  llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
   std::vector<llvm::Value*> components;
   for (int row = 0; row < 4; ++row) {
-    std::vector<std::vector<llvm::Value*>> entries(2);  // [knot][lane]
-    for (int l = 0; l < width; ++l) {
-      llvm::Value* row_slot = builder.CreateAlignedLoad(
-          int32, builder.CreateConstInBoundsGEP1_64(int32, slots, static_cast<std::uint64_t>(row * width + l)),
-          llvm::Align(4));
-      const std::vector<llvm::Value*> loaded =
-          interleaved_entries(builder, interleaved, builder.CreateZExt(row_slot, builder.getInt64Ty()), 2);
-      for (std::size_t knot = 0; knot < 2; ++knot) entries[knot].push_back(loaded[knot]);
-    }
-    const std::vector<llvm::Value*> row_components = transposed_gradients(builder, entries, width);
+    const std::vector<llvm::Value*> row_components = interleaved_gradients(builder, tables, width, 2, [&](int lane) {
+      llvm::Value* at = builder.CreateInBoundsGEP(int32, slots, in_group(row, builder.getInt64(lane)));
+      return builder.CreateAlignedLoad(int32, at, llvm::Align(4));
+    });
     components.insert(components.end(), row_components.begin(), row_components.end());
   }
   return components;
