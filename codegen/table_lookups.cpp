@@ -362,9 +362,39 @@ void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int wi
                 out);
 }
 
-// st_gather_small_f32_w<width>(out, table, size, index): in registers
-// where the table fits (a branch on the size, which inlining into a kernel
-// folds away), else as any gather.
+// A table of at most `width` entries `stride` floats apart as one vector
+// (entries past `count` repeat the last, so nothing beyond the table is
+// read), each lane picking its entry by index. Written as generic IR, a
+// build of elements extracted at variable lanes, which the x86 back end
+// turns into one variable permute (vpermps or vpermd at 8 lanes, their
+// 512-bit forms at 16) where the target has one: no load per lane. A
+// kernel's spline knots are constant data, so the vector folds to a
+// constant.
+llvm::Value* vector_table_lookup(llvm::IRBuilder<>& builder, llvm::Value* table, llvm::Value* count,
+                                 llvm::Value* stride, llvm::Value* index, int width) {
+  auto* vector = llvm::FixedVectorType::get(builder.getFloatTy(), static_cast<unsigned>(width));
+  llvm::Value* last = builder.CreateSub(count, builder.getInt32(1));
+  llvm::Value* entries = llvm::PoisonValue::get(vector);
+  for (int lane = 0; lane < width; ++lane) {
+    llvm::Value* entry = builder.CreateBinaryIntrinsic(llvm::Intrinsic::smin, builder.getInt32(lane), last);
+    llvm::Value* address = builder.CreateInBoundsGEP(builder.getFloatTy(), table, builder.CreateMul(entry, stride));
+    llvm::Value* knot = builder.CreateAlignedLoad(builder.getFloatTy(), address, llvm::Align(4));
+    entries = builder.CreateInsertElement(entries, knot, lane);
+  }
+  llvm::Value* lanes = builder.CreateAnd(index, builder.CreateVectorSplat(width, builder.getInt32(width - 1)));
+  llvm::Value* result = llvm::PoisonValue::get(vector);
+  for (int lane = 0; lane < width; ++lane)
+    result = builder.CreateInsertElement(
+        result, builder.CreateExtractElement(entries, builder.CreateExtractElement(lanes, lane)), lane);
+  return result;
+}
+
+// st_gather_small_f32_w<width>(out, table, count, stride, index): entry
+// index of `count` floats `stride` apart (one component of a spline's
+// knots). In one vector where they fit; else, in the AVX-512 strategies
+// that hold tables in registers, from two registers where their span does
+// (x86_small_table_entries); else as any gather. The branches on count
+// and stride fold away when inlined into a kernel.
 void define_small_table_lookup(llvm::Module& module, GatherStrategy strategy, int width, bool in_register) {
   llvm::Function* function = module.getFunction("st_gather_small_f32_w" + std::to_string(width));
   if (!function || !function->isDeclaration()) return;
@@ -373,22 +403,34 @@ void define_small_table_lookup(llvm::Module& module, GatherStrategy strategy, in
   auto args = function->arg_begin();
   llvm::Value* out = &*args++;
   llvm::Value* table = &*args++;
-  llvm::Value* size = &*args++;
+  llvm::Value* count = &*args++;
+  llvm::Value* stride = &*args++;
   llvm::Value* index =
       builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
+  auto* one_vector = llvm::BasicBlock::Create(context, "one_vector", function);
+  auto* larger = llvm::BasicBlock::Create(context, "larger", function);
+  builder.CreateCondBr(builder.CreateICmpSLE(count, builder.getInt32(width)), one_vector, larger);
+  builder.SetInsertPoint(one_vector);
+  builder.CreateStore(vector_table_lookup(builder, table, count, stride, index, width), out);
+  builder.CreateRetVoid();
+  builder.SetInsertPoint(larger);
+  llvm::Value* entries = builder.CreateMul(index, builder.CreateVectorSplat(width, stride));
   if (!in_register) {
-    builder.CreateStore(memory_lookup(builder, strategy, builder.getFloatTy(), table, index, width), out);
+    builder.CreateStore(memory_lookup(builder, strategy, builder.getFloatTy(), table, entries, width), out);
     builder.CreateRetVoid();
     return;
   }
-  auto* small = llvm::BasicBlock::Create(context, "small", function);
-  auto* large = llvm::BasicBlock::Create(context, "large", function);
-  builder.CreateCondBr(builder.CreateICmpSLE(size, builder.getInt32(x86_small_table_entries)), small, large);
-  builder.SetInsertPoint(small);
-  builder.CreateStore(x86_small_table_lookup(builder, module, table, size, index), out);
+  llvm::Value* span = builder.CreateAdd(builder.CreateMul(builder.CreateSub(count, builder.getInt32(1)), stride),
+                                        builder.getInt32(1));
+  auto* registers = llvm::BasicBlock::Create(context, "registers", function);
+  auto* memory = llvm::BasicBlock::Create(context, "memory", function);
+  builder.CreateCondBr(builder.CreateICmpSLE(span, builder.getInt32(x86_small_table_entries)), registers, memory);
+  builder.SetInsertPoint(registers);
+  builder.CreateStore(x86_small_table_lookup(builder, module, table, span, entries), out);
   builder.CreateRetVoid();
-  builder.SetInsertPoint(large);
-  builder.CreateStore(memory_lookup(builder, GatherStrategy::hardware, builder.getFloatTy(), table, index, width), out);
+  builder.SetInsertPoint(memory);
+  builder.CreateStore(memory_lookup(builder, GatherStrategy::hardware, builder.getFloatTy(), table, entries, width),
+                      out);
   builder.CreateRetVoid();
 }
 

@@ -243,6 +243,8 @@ inline Interval gather256(const float* table, IntervalInt index) {
 inline IntervalInt gather256(const std::int32_t* table, IntervalInt index) {
   return gather(table, {std::max(index.lo, 0), std::min(index.hi, 255)});
 }
-inline Interval gather_small(const float* table, std::int32_t, IntervalInt index) { return gather(table, index); }
+inline Interval gather_small(const float* table, std::int32_t, std::int32_t stride, IntervalInt index) {
+  return gather(table, index * stride);
+}
 
 }  // namespace shadetree::lanes

@@ -79,9 +79,12 @@ template <class T>
 std::array<T, 2> gather256_pair(const T* table, std::int32_t index) {
   return {table[index], table[index + 1]};
 }
-// Lookups in a float table of `size` entries, index in [0, size): a vector
-// backend may hold a small one (a spline's knots) in registers.
-inline float gather_small(const float* table, std::int32_t, std::int32_t index) { return table[index]; }
+// Entry `index` of a float table of `count` entries `stride` floats apart
+// (one component of a spline's knots), index in [0, count): a vector
+// backend may hold a small one in registers.
+inline float gather_small(const float* table, std::int32_t, std::int32_t stride, std::int32_t index) {
+  return table[index * stride];
+}
 
 template <class F>
 using IntOf = decltype(to_int(F{}));

@@ -142,7 +142,9 @@ auto gather256_pair(const T* table, intv index) {
   return std::array<Lanes, 2>{gather(table, index), gather(table, index + 1)};
 #endif
 }
-inline floatv gather_small(const float* table, std::int32_t, intv index) { return gather(table, index); }
+inline floatv gather_small(const float* table, std::int32_t, std::int32_t stride, intv index) {
+  return gather(table, index * stride);
+}
 #endif
 
 }  // namespace shadetree::lanes

@@ -255,8 +255,8 @@ template <class T>
 auto gather256_pair(const T* table, const TraceI& index) {
   return std::array{traced_gather(table, index), traced_gather(table, index + 1)};
 }
-inline TraceF gather_small(const float* table, std::int32_t, const TraceI& index) {
-  return traced_gather(table, index);
+inline TraceF gather_small(const float* table, std::int32_t, std::int32_t stride, const TraceI& index) {
+  return traced_gather(table, index * stride);
 }
 
 namespace trace_detail {

@@ -35,8 +35,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
                                              const intv<W>* index);                                          \
   extern "C" void st_gather256_pair_i32_w##W(intv<W>* at, intv<W>* next, const std::int32_t* table,          \
                                              const intv<W>* index);                                          \
-  extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t size,            \
-                                           const intv<W>* index);                                           \
+  extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t count,           \
+                                           std::int32_t stride, const intv<W>* index);                      \
   extern "C" void st_gather256_gradients_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* index); \
   extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
                                                    const intv<W>* index);                                     \
@@ -96,9 +96,9 @@ SHADETREE_VECTOR_GATHERS(16)
     st_gather256_pair_i32_w##W(&result[0], &result[1], table, &index);                                       \
     return result;                                                                                           \
   }                                                                                                          \
-  inline floatv<W> gather_small(const float* table, std::int32_t size, intv<W> index) {                     \
+  inline floatv<W> gather_small(const float* table, std::int32_t count, std::int32_t stride, intv<W> index) { \
     floatv<W> result;                                                                                        \
-    st_gather_small_f32_w##W(&result, table, size, &index);                                                  \
+    st_gather_small_f32_w##W(&result, table, count, stride, &index);                                         \
     return result;                                                                                           \
   }                                                                                                          \
   inline std::array<floatv<W>, 3> gather256_gradients(const NoiseTables& tables, intv<W> index) {            \

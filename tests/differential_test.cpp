@@ -184,10 +184,12 @@ TEST(NodeDifferential, ImagesAgreeInBothWrapModes) {
   for (int width : {4, 16}) EXPECT_EQ(compare_backends("images", loaded->ir, loaded->params, width), "");
 }
 
-// A spline's knots are looked up in registers where its table has at most
-// 32 entries (x86_small_table_entries), and gathered beyond: tables either
-// side of that size, float and color, in every basis, by every strategy.
-TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSize) {
+// A spline component's knots are permuted in one vector where they fit in
+// the kernel's width, in two registers where their span has at most 32
+// entries (x86_small_table_entries, AVX-512), and gathered beyond: knot
+// counts either side of each size, float and color, in every basis, at
+// every width, by every strategy.
+TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSizes) {
   auto knots = [](int count, int components) {
     std::string text;
     for (int k = 0; k < count; ++k) {
@@ -198,7 +200,8 @@ TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSize) {
     }
     return "[" + text + "]";
   };
-  for (auto [count, components] : {std::pair{4, 1}, {16, 1}, {32, 1}, {33, 1}, {5, 3}, {10, 3}, {11, 3}}) {
+  for (auto [count, components] :
+       {std::pair{4, 1}, {5, 1}, {8, 1}, {9, 1}, {16, 1}, {17, 1}, {32, 1}, {33, 1}, {5, 3}, {8, 3}, {9, 3}, {11, 3}}) {
     std::string nodes;
     const char* bases[] = {"catmull-rom", "linear", "step"};
     for (int b = 0; b < 3; ++b)
@@ -211,7 +214,7 @@ TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSize) {
                                               (components == 1 ? "" : R"(, "emission": "s2")") + "}}");
     ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
     const std::string name = "spline of " + std::to_string(count) + "x" + std::to_string(components);
-    EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 8), "");
+    for (int width : {4, 8, 16}) EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width), "") << width;
     if (host_vector_width() < 16) continue;
     for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
                                    GatherStrategy::in_register_byte_permutes,

@@ -24,7 +24,7 @@ F unit_clamp(F x) {
 // knots 1 .. count-2 and the end knots only steer the tangents.
 template <class F>
 F spline(const float* knots, int count, int components, int component, SplineBasis basis, F x) {
-  auto knot = [&](auto index) { return gather_small(knots, count * components, index * components + component); };
+  auto knot = [&](auto index) { return gather_small(knots + component, count, components, index); };
   x = unit_clamp(x);
   if (basis == SplineBasis::step) {
     auto index = to_int(min(floor(x * float(count)), splat<F>(float(count - 1))));
