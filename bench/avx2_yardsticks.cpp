@@ -5,8 +5,8 @@
 // FMAs written out, sin and pow as the inline polynomials of
 // bench/avx512_yardsticks.cpp. A knot row's six gradient components are
 // read one of two ways: six hardware gathers, or, from the interleaved
-// table (x, y, z, 0 per entry), two 16-byte loads per lane and a 4x4
-// transpose within each 128-bit half.
+// table (x, y, z and a 4D w that 3D noise ignores, per entry), two 16-byte
+// loads per lane and a 4x4 transpose within each 128-bit half.
 //
 // Every function that touches a ymm register has the avx2 and fma target
 // attribute, so that the file builds on any x86-64 host.
@@ -83,7 +83,7 @@ class InterleavedTables : public GatheredPermutation {
   SHADETREE_AVX2 RowGradients gradients(__m256i slot) const {
     alignas(32) std::int32_t slots[8];
     _mm256_store_si256(reinterpret_cast<__m256i*>(slots), slot);
-    const float* entries = tables_.hashed_gradient_xyz0.data();
+    const float* entries = tables_.hashed_gradient_xyzw.data();
     RowGradients row;
     for (int i = 0; i < 2; ++i) {
       __m256 lanes[4];

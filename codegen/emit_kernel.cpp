@@ -377,8 +377,8 @@ class KernelEmitter {
       return llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(values.data(), values.size()));
     };
     llvm::Constant* fields[] = {
-        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(tables.hashed_gradient_xyz0.data(),
-                                                                     tables.hashed_gradient_xyz0.size())),
+        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(tables.hashed_gradient_xyzw.data(),
+                                                                     tables.hashed_gradient_xyzw.size())),
         llvm::ConstantDataArray::get(context_, llvm::ArrayRef<std::int32_t>(tables.permutation.data(),
                                                                              tables.permutation.size())),
         floats(tables.gradient_x),        floats(tables.gradient_y),        floats(tables.gradient_z),

@@ -116,7 +116,7 @@ std::vector<int> within_each_quad(int width, std::array<int, 4> pattern) {
   return mask;
 }
 
-// A lane's (x, y, z, 0) entries of the interleaved gradient table from
+// A lane's (x, y, z, w) entries of the interleaved gradient table from
 // `slot` on (an i64), one 16-byte load per knot: [knot].
 std::vector<llvm::Value*> interleaved_entries(llvm::IRBuilder<>& builder, llvm::Value* interleaved, llvm::Value* slot,
                                               int knots) {
@@ -130,12 +130,14 @@ std::vector<llvm::Value*> interleaved_entries(llvm::IRBuilder<>& builder, llvm::
 }
 
 // The gradient components of `entries` ([knot][lane]: a lane's (x, y, z,
-// 0), as interleaved_entries reads them): lanes l, l + 4, l + 8, ... are
+// w), as interleaved_entries reads them): lanes l, l + 4, l + 8, ... are
 // put side by side (one register, a 128-bit quarter each) and four such
 // registers transposed within each quarter, as the four-by-four transpose
-// of SSE code does. Returns x at each knot, then y, then z.
+// of SSE code does. Returns x at each knot, then y, then z, then (with
+// `components` 4, for 4D noise) w.
 std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
-                                               const std::vector<std::vector<llvm::Value*>>& entries, int width) {
+                                               const std::vector<std::vector<llvm::Value*>>& entries, int width,
+                                               int components) {
   const int knots = static_cast<int>(entries.size());
   auto concatenate = [&](std::vector<llvm::Value*> parts) {
     while (parts.size() > 1) {
@@ -150,7 +152,7 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
     }
     return parts[0];
   };
-  std::vector<llvm::Value*> components(static_cast<std::size_t>(3 * knots));
+  std::vector<llvm::Value*> gradients(static_cast<std::size_t>(components * knots));
   for (int knot = 0; knot < knots; ++knot) {
     std::array<llvm::Value*, 4> rows;  // rows[k]: lanes k, k + 4, ... side by side
     for (int k = 0; k < 4; ++k) {
@@ -161,14 +163,16 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
     }
     llvm::Value* xy01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {0, 4, 1, 5}));
     llvm::Value* xy23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {0, 4, 1, 5}));
-    llvm::Value* z01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
-    llvm::Value* z23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
+    llvm::Value* zw01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
+    llvm::Value* zw23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
     const auto at = [&](int axis) { return static_cast<std::size_t>(axis * knots + knot); };
-    components[at(0)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
-    components[at(1)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
-    components[at(2)] = builder.CreateShuffleVector(z01, z23, within_each_quad(width, {0, 1, 4, 5}));
+    gradients[at(0)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
+    gradients[at(1)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
+    gradients[at(2)] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {0, 1, 4, 5}));
+    if (components == 4)
+      gradients[at(3)] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {2, 3, 6, 7}));
   }
-  return components;
+  return gradients;
 }
 
 // Whether gradients are read from the interleaved table: where memory is
@@ -190,40 +194,46 @@ void store_vectors(llvm::IRBuilder<>& builder, const std::vector<llvm::Value*>& 
 
 // The gradients of the knots at each lane's slot (and with `knots` 2 at
 // the slot + 1) from the interleaved table, one lane at a time:
-// slot_of_lane(l) is lane l's slot, an i32. x at each knot, then y, then z.
+// slot_of_lane(l) is lane l's slot, an i32. x at each knot, then y, then
+// z, then with `components` 4 the 4D w.
 template <class SlotOfLane>
 std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm::Value* tables, int width, int knots,
-                                                SlotOfLane slot_of_lane) {
-  llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyz0));
+                                                int components, SlotOfLane slot_of_lane) {
+  llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyzw));
   std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));  // [knot][lane]
   for (int lane = 0; lane < width; ++lane) {
     llvm::Value* slot = builder.CreateZExt(slot_of_lane(lane), builder.getInt64Ty());
     const std::vector<llvm::Value*> loaded = interleaved_entries(builder, interleaved, slot, knots);
     for (int knot = 0; knot < knots; ++knot) entries[static_cast<std::size_t>(knot)].push_back(loaded[knot]);
   }
-  return transposed_gradients(builder, entries, width);
+  return transposed_gradients(builder, entries, width, components);
 }
 
 // The hashed gradients of the knots at slot `index` (and with `knots` 2
-// at index + 1): x at each knot, then y, then z; from the interleaved
-// table or by lookups of each component's table.
+// at index + 1): x at each knot, then y, then z, then with `components` 4
+// the 4D w (gradient_x at the slot); from the interleaved table or by
+// lookups of each component's table.
 std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how,
-                                         llvm::Value* tables, llvm::Value* index, int width, int knots) {
+                                         llvm::Value* tables, llvm::Value* index, int width, int knots,
+                                         int components = 3) {
   if (reads_interleaved(how))
-    return interleaved_gradients(builder, tables, width, knots,
+    return interleaved_gradients(builder, tables, width, knots, components,
                                  [&](int lane) { return builder.CreateExtractElement(index, lane); });
-  std::vector<llvm::Value*> components;
-  for (std::size_t offset : {offsetof(NoiseTables, hashed_gradient_x), offsetof(NoiseTables, hashed_gradient_y),
-                             offsetof(NoiseTables, hashed_gradient_z)}) {
+  const std::array<std::size_t, 4> offsets{offsetof(NoiseTables, hashed_gradient_x),
+                                           offsetof(NoiseTables, hashed_gradient_y),
+                                           offsetof(NoiseTables, hashed_gradient_z), offsetof(NoiseTables, gradient_x)};
+  std::vector<llvm::Value*> gradients;
+  for (int axis = 0; axis < components; ++axis) {
+    const std::size_t offset = offsets[static_cast<std::size_t>(axis)];
     if (knots == 2) {
       const auto [at, next] =
           pair_lookup(builder, module, how, true, noise_table(builder, tables, offset), index, width);
-      components.insert(components.end(), {at, next});
+      gradients.insert(gradients.end(), {at, next});
     } else {
-      components.push_back(lookup256(builder, module, how, true, noise_table(builder, tables, offset), index, width));
+      gradients.push_back(lookup256(builder, module, how, true, noise_table(builder, tables, offset), index, width));
     }
   }
-  return components;
+  return gradients;
 }
 
 // st_gather256_gradients_w<width>(out, tables, index), one knot's
@@ -253,10 +263,11 @@ llvm::Value* slot_of(llvm::IRBuilder<>& builder, llvm::Value* index, llvm::Value
   return builder.CreateAnd(sum, sum->getType()->isVectorTy() ? builder.CreateVectorSplat(width, last) : last);
 }
 
-// The four rows of knots of st_gather256_knot_rows hashed a lane at a
-// time in general registers: hashed in vector registers, every level's
-// slots were moved out lane by lane and the pairs read there put back,
-// seven moves out a lane, and such moves were an octave's bound on Zen 3
+// The rows of knots of st_gather256_knot_rows (3D) and
+// st_gather256_knot_rows4 (4D) hashed a lane at a time in general
+// registers: hashed in vector registers, every level's slots were moved
+// out lane by lane and the pairs read there put back, seven moves out a
+// lane in 3D, and such moves were an octave's bound on Zen 3
 // (docs/architecture.md). A loop over the lanes loads each lane's indices
 // from `cell_at`, where the caller stored them, hashes them and keeps its
 // rows' slots on the stack; then each row's entries are read lane by
@@ -267,10 +278,12 @@ llvm::Value* slot_of(llvm::IRBuilder<>& builder, llvm::Value* index, llvm::Value
 // the loop meant storing and loading them again for the transposes,
 // which lost more than the loop saved.
 std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
-                                                llvm::Value* tables, llvm::Value* cell_at, int width) {
+                                                llvm::Value* tables, llvm::Value* cell_at, int width,
+                                                int dimensions) {
   llvm::Type* int32 = builder.getInt32Ty();
+  const int rows = 1 << (dimensions - 1);
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
-  llvm::Value* slots = builder.CreateAlloca(llvm::ArrayType::get(int32, static_cast<std::uint64_t>(4 * width)));
+  llvm::Value* slots = builder.CreateAlloca(llvm::ArrayType::get(int32, static_cast<std::uint64_t>(rows * width)));
   // Element `lane` of group `group` of a [group][lane] block of i32s.
   const auto in_group = [&](int group, auto lane) {
     return builder.CreateAdd(builder.getInt64(static_cast<std::uint64_t>(group * width)), lane);
@@ -292,64 +305,80 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   builder.SetInsertPoint(lanes);
   llvm::PHINode* lane = builder.CreatePHI(builder.getInt64Ty(), 2);
   lane->addIncoming(builder.getInt64(0), before);
-  std::array<llvm::Value*, 3> index;
-  for (int axis = 0; axis < 3; ++axis)
-    index[static_cast<std::size_t>(axis)] = builder.CreateAlignedLoad(
-        int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(axis, lane)), llvm::Align(4));
-  const auto hash_k = pair(slot_of(builder, index[2], builder.getInt32(0), width));
-  for (int dk = 0; dk < 2; ++dk) {
-    const auto hash_jk = pair(slot_of(builder, index[1], hash_k[static_cast<std::size_t>(dk)], width));
-    for (int dj = 0; dj < 2; ++dj)
-      builder.CreateAlignedStore(slot_of(builder, index[0], hash_jk[static_cast<std::size_t>(dj)], width),
-                                 builder.CreateInBoundsGEP(int32, slots, in_group(2 * dk + dj, lane)), llvm::Align(4));
-  }
+  std::vector<llvm::Value*> index;
+  for (int axis = 0; axis < dimensions; ++axis)
+    index.push_back(builder.CreateAlignedLoad(int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(axis, lane)),
+                                              llvm::Align(4)));
+  // From the outermost axis in, depth first: a hash reaches a pair of the
+  // next axis's cells, and the rows come out in the order 4 dl + 2 dk + dj.
+  const auto hash_rows = [&](const auto& self, int axis, llvm::Value* hash, int row) -> void {
+    if (axis == 0) {
+      builder.CreateAlignedStore(slot_of(builder, index[0], hash, width),
+                                 builder.CreateInBoundsGEP(int32, slots, in_group(row, lane)), llvm::Align(4));
+      return;
+    }
+    const auto cells = pair(slot_of(builder, index[static_cast<std::size_t>(axis)], hash, width));
+    for (int d = 0; d < 2; ++d) self(self, axis - 1, cells[static_cast<std::size_t>(d)], 2 * row + d);
+  };
+  hash_rows(hash_rows, dimensions - 1, builder.getInt32(0), 0);
   llvm::Value* next = builder.CreateAdd(lane, builder.getInt64(1));
   lane->addIncoming(next, lanes);
   builder.CreateCondBr(builder.CreateICmpULT(next, builder.getInt64(static_cast<std::uint64_t>(width))), lanes, hashed);
   builder.SetInsertPoint(hashed);
-  std::vector<llvm::Value*> components;
-  for (int row = 0; row < 4; ++row) {
-    const std::vector<llvm::Value*> row_components = interleaved_gradients(builder, tables, width, 2, [&](int lane) {
-      llvm::Value* at = builder.CreateInBoundsGEP(int32, slots, in_group(row, builder.getInt64(lane)));
-      return builder.CreateAlignedLoad(int32, at, llvm::Align(4));
-    });
-    components.insert(components.end(), row_components.begin(), row_components.end());
+  std::vector<llvm::Value*> gradients;
+  for (int row = 0; row < rows; ++row) {
+    const std::vector<llvm::Value*> row_gradients =
+        interleaved_gradients(builder, tables, width, 2, dimensions, [&](int lane) {
+          llvm::Value* at = builder.CreateInBoundsGEP(int32, slots, in_group(row, builder.getInt64(lane)));
+          return builder.CreateAlignedLoad(int32, at, llvm::Align(4));
+        });
+    gradients.insert(gradients.end(), row_gradients.begin(), row_gradients.end());
   }
-  return components;
+  return gradients;
 }
 
 // The same rows hashed in vector registers, by the strategy's lookups.
 std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
                                                   const Lookups256& how, llvm::Value* tables, llvm::Value* cell_at,
-                                                  int width) {
+                                                  int width, int dimensions) {
   auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
-  std::array<llvm::Value*, 3> index;
-  for (int axis = 0; axis < 3; ++axis)
-    index[static_cast<std::size_t>(axis)] =
-        builder.CreateLoad(index_type, builder.CreateConstInBoundsGEP1_32(index_type, cell_at, axis));
+  const auto index = [&](int axis) {
+    return builder.CreateLoad(index_type, builder.CreateConstInBoundsGEP1_32(index_type, cell_at, axis));
+  };
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
-  const auto hash_k = pair_lookup(builder, module, how, false, permutation,
-                                  slot_of(builder, index[2], llvm::Constant::getNullValue(index_type), width), width);
-  std::vector<llvm::Value*> components;
-  for (llvm::Value* k_hash : {hash_k.first, hash_k.second}) {
-    const auto hash_jk =
-        pair_lookup(builder, module, how, false, permutation, slot_of(builder, index[1], k_hash, width), width);
-    for (llvm::Value* jk_hash : {hash_jk.first, hash_jk.second}) {
-      const std::vector<llvm::Value*> row =
-          knot_gradients(builder, module, how, tables, slot_of(builder, index[0], jk_hash, width), width, 2);
-      components.insert(components.end(), row.begin(), row.end());
+  std::vector<llvm::Value*> hashes{llvm::Constant::getNullValue(index_type)};
+  for (int axis = dimensions - 1; axis >= 1; --axis) {
+    llvm::Value* cells = index(axis);
+    std::vector<llvm::Value*> inner;
+    for (llvm::Value* hash : hashes) {
+      const auto [at, next] =
+          pair_lookup(builder, module, how, false, permutation, slot_of(builder, cells, hash, width), width);
+      inner.insert(inner.end(), {at, next});
     }
+    hashes = std::move(inner);
   }
-  return components;
+  llvm::Value* i = index(0);
+  std::vector<llvm::Value*> gradients;
+  for (llvm::Value* hash : hashes) {
+    const std::vector<llvm::Value*> row =
+        knot_gradients(builder, module, how, tables, slot_of(builder, i, hash, width), width, 2, dimensions);
+    gradients.insert(gradients.end(), row.begin(), row.end());
+  }
+  return gradients;
 }
 
 // st_gather256_knot_rows_w<width>(out, tables, cell): the gradients of
 // the four rows of knots around lattice cell (i, j, k) = cell[0..2], as
 // nodes/semantics/noise.h's for_each_noise_row hashes them: row 2 dk + dj
 // at slot (i + phi(j + phi(k)[dk])[dj]) mod n, its two knots' x, y and z.
-// Lane by lane where memory is read lane by lane.
-void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int width) {
-  llvm::Function* function = module.getFunction("st_gather256_knot_rows_w" + std::to_string(width));
+// st_gather256_knot_rows4_w<width>, with `dimensions` 4, the eight rows
+// around (i, j, k, l) as nodes/semantics/noise4.h hashes them, row 4 dl +
+// 2 dk + dj, its two knots' x, y, z and w. Lane by lane where memory is
+// read lane by lane.
+void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int width, int dimensions) {
+  llvm::Function* function = module.getFunction(std::string(dimensions == 4 ? "st_gather256_knot_rows4_w"
+                                                                            : "st_gather256_knot_rows_w") +
+                                                std::to_string(width));
   if (!function || !function->isDeclaration()) return;
   llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
   auto args = function->arg_begin();
@@ -357,8 +386,9 @@ void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int wi
   llvm::Value* tables = &*args++;
   llvm::Value* cell_at = &*args;
   store_vectors(builder,
-                reads_interleaved(how) ? lane_hashed_knot_rows(builder, module, tables, cell_at, width)
-                                       : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width),
+                reads_interleaved(how)
+                    ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, dimensions)
+                    : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, dimensions),
                 out);
 }
 
@@ -449,7 +479,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
     for (int knots : {1, 2}) define_gradient_lookup(module, how, width, knots);
-    define_knot_rows_lookup(module, how, width);
+    for (int dimensions : {3, 4}) define_knot_rows_lookup(module, how, width, dimensions);
     for (bool is_float : {true, false}) {
       define_pair_lookup(module, how, width, is_float);
       for (bool table256 : {false, true}) {

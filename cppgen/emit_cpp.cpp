@@ -232,7 +232,7 @@ class CppEmitter {
       auto ints = [](std::int32_t v) { return std::to_string(v); };
       out << "// Perlin & Hoffert 1989 section 2.3: the noise tables of seed " << seed << ".\n"
           << "inline constexpr NoiseTables tables_" << seed << " = {\n    {{"
-          << list(tables.hashed_gradient_xyz0, float_literal) << "}},\n    {{" << list(tables.permutation, ints)
+          << list(tables.hashed_gradient_xyzw, float_literal) << "}},\n    {{" << list(tables.permutation, ints)
           << "}},\n";
       for (const auto* table : {&tables.gradient_x, &tables.gradient_y, &tables.gradient_z, &tables.hashed_gradient_x,
                                 &tables.hashed_gradient_y, &tables.hashed_gradient_z})

@@ -22,10 +22,12 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // target: a hardware gather, one load per lane, or permutes of registers.
 // gather256_gradients and gather256_gradient_pairs, the three hashed
 // gradient tables at index (and with pairs at index + 1: out is x at both,
-// then y, then z), and gather256_knot_rows, those pairs of the four rows
-// of knots around lattice cell (i, j, k) (nodes/semantics/noise.h,
-// for_each_noise_row: out is row 0's six, then row 1's, ...), exist only
-// in this lane (nodes/semantics/noise.h asks whether they do).
+// then y, then z), gather256_knot_rows, those pairs of the four rows of
+// knots around lattice cell (i, j, k) (nodes/semantics/noise.h,
+// for_each_noise_row: out is row 0's six, then row 1's, ...), and
+// gather256_knot_rows4, the 4D gradient pairs (x, y, z, w) of the eight
+// rows around cell (i, j, k, l) (nodes/semantics/noise4.h: row 4 dl + 2 dk
+// + dj), exist only in this lane (the semantics ask whether they do).
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
@@ -40,7 +42,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather256_gradients_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* index); \
   extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
                                                    const intv<W>* index);                                     \
-  extern "C" void st_gather256_knot_rows_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell);
+  extern "C" void st_gather256_knot_rows_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell); \
+  extern "C" void st_gather256_knot_rows4_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
@@ -121,6 +124,17 @@ SHADETREE_VECTOR_GATHERS(16)
              {{{r[6], r[7]}, {r[8], r[9]}, {r[10], r[11]}}},                                                 \
              {{{r[12], r[13]}, {r[14], r[15]}, {r[16], r[17]}}},                                             \
              {{{r[18], r[19]}, {r[20], r[21]}, {r[22], r[23]}}}}};                                           \
+  }                                                                                                          \
+  inline std::array<std::array<std::array<floatv<W>, 2>, 4>, 8> gather256_knot_rows4(                         \
+      const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k, intv<W> l) {                               \
+    const intv<W> cell[4] = {i, j, k, l};                                                                    \
+    floatv<W> r[64];                                                                                         \
+    st_gather256_knot_rows4_w##W(r, &tables, cell);                                                          \
+    std::array<std::array<std::array<floatv<W>, 2>, 4>, 8> rows;                                             \
+    for (int row = 0; row < 8; ++row)                                                                        \
+      for (int axis = 0; axis < 4; ++axis)                                                                   \
+        for (int knot = 0; knot < 2; ++knot) rows[row][axis][knot] = r[8 * row + 2 * axis + knot];            \
+    return rows;                                                                                             \
   }
 
 SHADETREE_VECTOR_LANES(4)

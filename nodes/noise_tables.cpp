@@ -62,9 +62,10 @@ NoiseTables make_noise_tables(std::uint32_t seed) {
     (*table)[noise_table_size] = (*table)[0];
   tables.permutation[noise_table_size] = tables.permutation[0];
   for (int i = 0; i <= noise_table_size; ++i) {
-    tables.hashed_gradient_xyz0[4 * i + 0] = tables.hashed_gradient_x[i];
-    tables.hashed_gradient_xyz0[4 * i + 1] = tables.hashed_gradient_y[i];
-    tables.hashed_gradient_xyz0[4 * i + 2] = tables.hashed_gradient_z[i];
+    tables.hashed_gradient_xyzw[4 * i + 0] = tables.hashed_gradient_x[i];
+    tables.hashed_gradient_xyzw[4 * i + 1] = tables.hashed_gradient_y[i];
+    tables.hashed_gradient_xyzw[4 * i + 2] = tables.hashed_gradient_z[i];
+    tables.hashed_gradient_xyzw[4 * i + 3] = tables.gradient_x[i];
   }
   return tables;
 }

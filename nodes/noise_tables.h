@@ -18,12 +18,13 @@ using PermutationTable = std::array<std::int32_t, noise_table_size + 1>;
 using GradientTable = std::array<float, noise_table_size + 1>;
 
 struct NoiseTables {
-  // The hashed gradients below interleaved as (x, y, z, 0) per entry: a
-  // knot row's six gradient components, entries i and i + 1, are 32
-  // contiguous bytes, read with one load per lane where a vector backend
-  // reads memory lane by lane. First, so that tables aligned to 16 bytes
-  // keep its entries aligned.
-  std::array<float, 4 * (noise_table_size + 1)> hashed_gradient_xyz0;
+  // The hashed gradients below interleaved, with gradient_x as the fourth:
+  // (G[P[i]].x, G[P[i]].y, G[P[i]].z, G[i].x) per entry, a 4D noise knot's
+  // whole gradient (nodes/semantics/noise4.h). A knot row's gradients,
+  // entries i and i + 1, are 32 contiguous bytes, read with one load per
+  // knot and lane where a vector backend reads memory lane by lane. First,
+  // so that tables aligned to 16 bytes keep its entries aligned.
+  std::array<float, 4 * (noise_table_size + 1)> hashed_gradient_xyzw;
   PermutationTable permutation;                            // P: a permutation of 0..n-1
   GradientTable gradient_x;                                // G: unit vectors, as SoA
   GradientTable gradient_y;

@@ -331,14 +331,15 @@ TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
 }
 
 // Half of each of these kernels is compiled apart and called, with the
-// values it leaves passed through memory: of the fireball, the first part
-// of its octave loop's one long block (a 4D noise, antialiased); of
+// values it leaves passed through memory: of looping_turbulence, the
+// first part of its octave loop's one long block (a periodic 4D noise,
+// antialiased); of the fireball at width 16, the same; of
 // eroded_cube, its first octave loop; of mesh_hypertexture at width 16, a
 // stretch that reads the mesh, which stays in the other module (exported
 // as "..._half.data0"). The result is the interpreter's to the bit.
 TEST(SplitKernelDifferential, KernelsGeneratedInHalvesAgree) {
   const std::vector<std::pair<const char*, std::vector<int>>> halved = {
-      {"fireball", {8, 16}}, {"eroded_cube", {8, 16}}, {"mesh_hypertexture", {16}}};
+      {"looping_turbulence", {8}}, {"fireball", {16}}, {"eroded_cube", {8, 16}}, {"mesh_hypertexture", {16}}};
   for (const auto& [name, widths] : halved) {
     Result<LoadedGraph> loaded = testing::load_gallery_graph(std::string(SHADETREE_SOURCE_DIR "/graphs/") + name + ".json");
     ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();

@@ -58,19 +58,20 @@ TEST(NoiseTables, TablesRepeatTheirFirstEntryAfterTheLast) {
   }
 }
 
-// A knot's whole gradient is one 16-byte read of the interleaved table
-// (codegen/table_lookups.cpp), and a row's two knots 32 contiguous bytes:
-// entry i holds the hashed gradient of slot i, and entry 256 slot 0's.
-TEST(NoiseTables, TheInterleavedGradientsAreTheHashedOnesWithAZeroFourth) {
-  const auto& interleaved = tables().hashed_gradient_xyz0;
+// A knot's whole gradient, in 3D and in 4D (where w is gradient_x at the
+// slot, nodes/semantics/noise4.h), is one 16-byte read of the interleaved
+// table (codegen/table_lookups.cpp), and a row's two knots 32 contiguous
+// bytes: entry i holds slot i's, and entry 256 slot 0's.
+TEST(NoiseTables, TheInterleavedGradientsAreTheHashedOnesThenTheUnhashedX) {
+  const auto& interleaved = tables().hashed_gradient_xyzw;
   for (int slot = 0; slot <= noise_table_size; ++slot) {
     const int wrapped = slot % noise_table_size;
     EXPECT_EQ(interleaved[4 * slot + 0], tables().hashed_gradient_x[wrapped]) << "slot " << slot;
     EXPECT_EQ(interleaved[4 * slot + 1], tables().hashed_gradient_y[wrapped]) << "slot " << slot;
     EXPECT_EQ(interleaved[4 * slot + 2], tables().hashed_gradient_z[wrapped]) << "slot " << slot;
-    EXPECT_EQ(interleaved[4 * slot + 3], 0.0f) << "slot " << slot;
+    EXPECT_EQ(interleaved[4 * slot + 3], tables().gradient_x[wrapped]) << "slot " << slot;
   }
-  EXPECT_EQ(offsetof(NoiseTables, hashed_gradient_xyz0), 0u) << "first, so aligned tables keep it aligned";
+  EXPECT_EQ(offsetof(NoiseTables, hashed_gradient_xyzw), 0u) << "first, so aligned tables keep it aligned";
 }
 
 TEST(NoiseTables, SeedsGiveDifferentTablesAndTheSameSeedTheSame) {

@@ -53,21 +53,57 @@ F noise4_slope(const std::array<G, 4>& g, F u, F v, F s, F t) {
   return g[0] * u + g[1] * v + g[2] * s + g[3] * t;
 }
 
+// Whether lanes of index type I look up the 4D gradients of a cell's
+// eight rows of knots in one go (gather256_knot_rows4, which only
+// nodes/lane_vector.h declares).
+template <class I, class = void>
+struct LooksUpKnotRows4 : std::false_type {};
+template <class I>
+struct LooksUpKnotRows4<I, std::void_t<decltype(gather256_knot_rows4(std::declval<const NoiseTables&>(),
+                                                                     std::declval<I>(), std::declval<I>(),
+                                                                     std::declval<I>(), std::declval<I>()))>>
+    : std::true_type {};
+
+// The rows of for_each_noise4_row with their knots' 4D gradients:
+// visit(g, u, v, s, t), g[axis][knot] for axes x, y, z, w. On the lattice,
+// lanes that can look up all eight rows in one go do, as
+// for_each_noise_gradient_row does in 3D.
+template <class F, class Axis, class Visit>
+void for_each_noise4_gradient_row(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
+                                  const Axis& az, const Axis& aw, Visit visit) {
+  if constexpr (Axis::next_cell_hashes_next && LooksUpKnotRows4<IntOf<F>>::value) {
+    const auto rows = gather256_knot_rows4(tables, ax.index(0), ay.index(0), az.index(0), aw.index(0));
+    F fw = w - aw.corner();
+    each_of_0_and_1([&](auto dl) {
+      F t = fw - float(dl);
+      for_each_row_offset(x, y, z, ax, ay, az, [&](auto dk, auto dj, const std::array<F, 2>& u, F v, F s) {
+        visit(rows[4 * dl + 2 * dk + dj], u, v, s, t);
+      });
+    });
+  } else {
+    const float* gradient_w = noise4_gradient_tables(tables)[3];
+    for_each_noise4_row(tables, x, y, z, w, ax, ay, az, aw,
+                        [&](const auto& row, const std::array<F, 2>& u, F v, F s, F t) {
+                          const auto [gx, gy, gz] = row.gradients(tables);
+                          visit(std::array{gx, gy, gz, row.entries(gradient_w)}, u, v, s, t);
+                        });
+  }
+}
+
 // sum over the 16 knots of w(u) w(v) w(s) w(t) (g . (u, v, s, t)).
 template <class F, class Axis>
 F noise4_on_axes(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay, const Axis& az,
                  const Axis& aw) {
-  const auto gradient = noise4_gradient_tables(tables);
   F sum = splat<F>(0.0f);
-  for_each_noise4_row(tables, x, y, z, w, ax, ay, az, aw,
-                      [&](const auto& row, const std::array<F, 2>& u, F v, F s, F t) {
-                        const auto [gx, gy, gz] = row.gradients(tables);
-                        const auto gw = row.entries(gradient[3]);
-                        each_of_0_and_1([&](auto di) {
-                          sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(s) * noise_weight(t) *
-                                          noise4_slope(std::array{gx[di], gy[di], gz[di], gw[di]}, u[di], v, s, t);
-                        });
-                      });
+  for_each_noise4_gradient_row(tables, x, y, z, w, ax, ay, az, aw,
+                               [&](const auto& g, const std::array<F, 2>& u, F v, F s, F t) {
+                                 each_of_0_and_1([&](auto di) {
+                                   sum = sum + noise_weight(u[di]) * noise_weight(v) * noise_weight(s) *
+                                                   noise_weight(t) *
+                                                   noise4_slope(std::array{g[0][di], g[1][di], g[2][di], g[3][di]},
+                                                                u[di], v, s, t);
+                                 });
+                               });
   return sum;
 }
 
