@@ -75,16 +75,20 @@ namespace {
 // that the weights of noise ops, which kernel_split.h's and the
 // outlining's thresholds were measured with, stay what they were at
 // every width (turbulence weighed 1097 with them, 1036 with the 3D call
-// counted as one; turbulence4 628 and 429 with the 4D call).
-constexpr unsigned knot_rows_lookup_weight = 62;
-constexpr unsigned knot_rows4_lookup_weight = 200;
+// counted as one; turbulence4 628 and 429 with the 4D call; where the
+// axes wrap, pturbulence 465 and 338, pturbulence4 1139 and 589).
+unsigned knot_rows_lookup_weight(llvm::StringRef callee) {
+  if (callee.starts_with("st_gather256_knot_rows_w")) return 62;
+  if (callee.starts_with("st_gather256_knot_rows4_w")) return 200;
+  if (callee.starts_with("st_gather256_knot_rows_apart_w")) return 128;
+  if (callee.starts_with("st_gather256_knot_rows4_apart_w")) return 551;
+  return 0;
+}
 
 unsigned weight_of(const llvm::Value* value) {
   if (const auto* call = llvm::dyn_cast<llvm::CallInst>(value))
-    if (const llvm::Function* callee = call->getCalledFunction()) {
-      if (callee->getName().starts_with("st_gather256_knot_rows_w")) return knot_rows_lookup_weight;
-      if (callee->getName().starts_with("st_gather256_knot_rows4_w")) return knot_rows4_lookup_weight;
-    }
+    if (const llvm::Function* callee = call->getCalledFunction())
+      if (const unsigned weight = knot_rows_lookup_weight(callee->getName())) return weight;
   return llvm::isa<llvm::Instruction>(value) ? 1 : 0;
 }
 

@@ -263,15 +263,35 @@ llvm::Value* slot_of(llvm::IRBuilder<>& builder, llvm::Value* index, llvm::Value
   return builder.CreateAnd(sum, sum->getType()->isVectorTy() ? builder.CreateVectorSplat(width, last) : last);
 }
 
-// The rows of knots of st_gather256_knot_rows (3D) and
-// st_gather256_knot_rows4 (4D) hashed a lane at a time in general
-// registers: hashed in vector registers, every level's slots were moved
-// out lane by lane and the pairs read there put back, seven moves out a
-// lane in 3D, and such moves were an octave's bound on Zen 3
-// (docs/architecture.md). A loop over the lanes loads each lane's indices
-// from `cell_at`, where the caller stored them, hashes them and keeps its
-// rows' slots on the stack; then each row's entries are read lane by
-// lane, each slot loaded back (a load, not a move out of a vector
+// Which knot-rows lookup: over 3 or 4 axes, with each axis's second cell
+// hashed as its index + 1 (`adjacent`: the lattice, cell[axis] holding
+// the index) or by an index of its own (an axis that wraps, cell[2 axis +
+// d] holding cell d's).
+struct KnotRowsShape {
+  int dimensions;
+  bool adjacent;
+  int rows() const { return 1 << (dimensions - 1); }
+  // Where cell d's index of `axis` is in the caller's block.
+  int cell_group(int axis, int d) const { return adjacent ? axis : 2 * axis + d; }
+};
+
+// The gradients of a row's two knots read apart, each as x, y, z (and w),
+// as x at both knots, then y, then z (then w): a row read in one go.
+std::vector<llvm::Value*> side_by_side(const std::vector<llvm::Value*>& first,
+                                       const std::vector<llvm::Value*>& second) {
+  std::vector<llvm::Value*> row;
+  for (std::size_t axis = 0; axis < first.size(); ++axis) row.insert(row.end(), {first[axis], second[axis]});
+  return row;
+}
+
+// The rows of knots of the st_gather256_knot_rows lookups hashed a lane at
+// a time in general registers: hashed in vector registers, every level's
+// slots were moved out lane by lane and the pairs read there put back,
+// seven moves out a lane in 3D, and such moves were an octave's bound on
+// Zen 3 (docs/architecture.md). A loop over the lanes loads each lane's
+// indices from `cell_at`, where the caller stored them, hashes them and
+// keeps its rows' slots on the stack; then each row's entries are read
+// lane by lane, each slot loaded back (a load, not a move out of a vector
 // register), and transposed. Written out for every lane instead, the hash
 // ran plain noise faster still (about 1.5x) but compiled the noise graphs
 // 10-20% slower (turbulence, marble, wool); reading the entries inside
@@ -279,20 +299,33 @@ llvm::Value* slot_of(llvm::IRBuilder<>& builder, llvm::Value* index, llvm::Value
 // which lost more than the loop saved.
 std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
                                                 llvm::Value* tables, llvm::Value* cell_at, int width,
-                                                int dimensions) {
+                                                const KnotRowsShape& shape) {
   llvm::Type* int32 = builder.getInt32Ty();
-  const int rows = 1 << (dimensions - 1);
+  const int knots_apart = shape.adjacent ? 1 : 2;  // slots kept per row
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
-  llvm::Value* slots = builder.CreateAlloca(llvm::ArrayType::get(int32, static_cast<std::uint64_t>(rows * width)));
+  llvm::Value* slots = builder.CreateAlloca(
+      llvm::ArrayType::get(int32, static_cast<std::uint64_t>(shape.rows() * knots_apart * width)));
   // Element `lane` of group `group` of a [group][lane] block of i32s.
   const auto in_group = [&](int group, auto lane) {
     return builder.CreateAdd(builder.getInt64(static_cast<std::uint64_t>(group * width)), lane);
   };
-  // The entry at a slot is its pair's first half in memory.
+  const auto entry_at = [&](llvm::Value* slot) {
+    return builder.CreateInBoundsGEP(int32, permutation, builder.CreateZExt(slot, builder.getInt64Ty()));
+  };
+  // The permutation's entries at both cells of `axis` from `hash`: where
+  // they are adjacent, the entry at a slot is its pair's first half in
+  // memory.
   const bool little_endian = module.getDataLayout().isLittleEndian();
-  const auto pair = [&](llvm::Value* at) {
-    llvm::Value* address = builder.CreateInBoundsGEP(int32, permutation, builder.CreateZExt(at, builder.getInt64Ty()));
-    llvm::Value* both = builder.CreateAlignedLoad(builder.getInt64Ty(), address, llvm::Align(4));
+  std::vector<std::array<llvm::Value*, 2>> index;  // [axis][cell]
+  const auto cells = [&](int axis, llvm::Value* hash) {
+    const auto& at = index[static_cast<std::size_t>(axis)];
+    const auto entry = [&](int d) -> llvm::Value* {
+      return builder.CreateAlignedLoad(int32, entry_at(slot_of(builder, at[static_cast<std::size_t>(d)], hash, width)),
+                                       llvm::Align(4));
+    };
+    if (!shape.adjacent) return std::array{entry(0), entry(1)};
+    llvm::Value* both =
+        builder.CreateAlignedLoad(builder.getInt64Ty(), entry_at(slot_of(builder, at[0], hash, width)), llvm::Align(4));
     llvm::Value* low = builder.CreateTrunc(both, int32);
     llvm::Value* high = builder.CreateTrunc(builder.CreateLShr(both, 32), int32);
     return little_endian ? std::array{low, high} : std::array{high, low};
@@ -305,33 +338,42 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   builder.SetInsertPoint(lanes);
   llvm::PHINode* lane = builder.CreatePHI(builder.getInt64Ty(), 2);
   lane->addIncoming(builder.getInt64(0), before);
-  std::vector<llvm::Value*> index;
-  for (int axis = 0; axis < dimensions; ++axis)
-    index.push_back(builder.CreateAlignedLoad(int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(axis, lane)),
-                                              llvm::Align(4)));
+  for (int axis = 0; axis < shape.dimensions; ++axis) {
+    std::array<llvm::Value*, 2> at{};
+    for (int d = 0; d < knots_apart; ++d)
+      at[static_cast<std::size_t>(d)] = builder.CreateAlignedLoad(
+          int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(shape.cell_group(axis, d), lane)), llvm::Align(4));
+    index.push_back(at);
+  }
   // From the outermost axis in, depth first: a hash reaches a pair of the
   // next axis's cells, and the rows come out in the order 4 dl + 2 dk + dj.
   const auto hash_rows = [&](const auto& self, int axis, llvm::Value* hash, int row) -> void {
     if (axis == 0) {
-      builder.CreateAlignedStore(slot_of(builder, index[0], hash, width),
-                                 builder.CreateInBoundsGEP(int32, slots, in_group(row, lane)), llvm::Align(4));
+      for (int d = 0; d < knots_apart; ++d)
+        builder.CreateAlignedStore(slot_of(builder, index[0][static_cast<std::size_t>(d)], hash, width),
+                                   builder.CreateInBoundsGEP(int32, slots, in_group(knots_apart * row + d, lane)),
+                                   llvm::Align(4));
       return;
     }
-    const auto cells = pair(slot_of(builder, index[static_cast<std::size_t>(axis)], hash, width));
-    for (int d = 0; d < 2; ++d) self(self, axis - 1, cells[static_cast<std::size_t>(d)], 2 * row + d);
+    const auto pair = cells(axis, hash);
+    for (int d = 0; d < 2; ++d) self(self, axis - 1, pair[static_cast<std::size_t>(d)], 2 * row + d);
   };
-  hash_rows(hash_rows, dimensions - 1, builder.getInt32(0), 0);
+  hash_rows(hash_rows, shape.dimensions - 1, builder.getInt32(0), 0);
   llvm::Value* next = builder.CreateAdd(lane, builder.getInt64(1));
   lane->addIncoming(next, lanes);
   builder.CreateCondBr(builder.CreateICmpULT(next, builder.getInt64(static_cast<std::uint64_t>(width))), lanes, hashed);
   builder.SetInsertPoint(hashed);
+  // The gradients of `knots` knots on from the slots of group `group`.
+  const auto read = [&](int group, int knots) {
+    return interleaved_gradients(builder, tables, width, knots, shape.dimensions, [&](int lane) {
+      llvm::Value* at = builder.CreateInBoundsGEP(int32, slots, in_group(group, builder.getInt64(lane)));
+      return builder.CreateAlignedLoad(int32, at, llvm::Align(4));
+    });
+  };
   std::vector<llvm::Value*> gradients;
-  for (int row = 0; row < rows; ++row) {
+  for (int row = 0; row < shape.rows(); ++row) {
     const std::vector<llvm::Value*> row_gradients =
-        interleaved_gradients(builder, tables, width, 2, dimensions, [&](int lane) {
-          llvm::Value* at = builder.CreateInBoundsGEP(int32, slots, in_group(row, builder.getInt64(lane)));
-          return builder.CreateAlignedLoad(int32, at, llvm::Align(4));
-        });
+        shape.adjacent ? read(row, 2) : side_by_side(read(2 * row, 1), read(2 * row + 1, 1));
     gradients.insert(gradients.end(), row_gradients.begin(), row_gradients.end());
   }
   return gradients;
@@ -340,28 +382,41 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
 // The same rows hashed in vector registers, by the strategy's lookups.
 std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
                                                   const Lookups256& how, llvm::Value* tables, llvm::Value* cell_at,
-                                                  int width, int dimensions) {
+                                                  int width, const KnotRowsShape& shape) {
   auto* index_type = llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width));
-  const auto index = [&](int axis) {
-    return builder.CreateLoad(index_type, builder.CreateConstInBoundsGEP1_32(index_type, cell_at, axis));
+  const auto index = [&](int axis, int d) {
+    return builder.CreateLoad(index_type,
+                              builder.CreateConstInBoundsGEP1_32(index_type, cell_at, shape.cell_group(axis, d)));
   };
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
   std::vector<llvm::Value*> hashes{llvm::Constant::getNullValue(index_type)};
-  for (int axis = dimensions - 1; axis >= 1; --axis) {
-    llvm::Value* cells = index(axis);
+  for (int axis = shape.dimensions - 1; axis >= 1; --axis) {
+    llvm::Value* first = index(axis, 0);
+    llvm::Value* second = shape.adjacent ? nullptr : index(axis, 1);
     std::vector<llvm::Value*> inner;
     for (llvm::Value* hash : hashes) {
-      const auto [at, next] =
-          pair_lookup(builder, module, how, false, permutation, slot_of(builder, cells, hash, width), width);
-      inner.insert(inner.end(), {at, next});
+      if (shape.adjacent) {
+        const auto [at, next] =
+            pair_lookup(builder, module, how, false, permutation, slot_of(builder, first, hash, width), width);
+        inner.insert(inner.end(), {at, next});
+      } else {
+        for (llvm::Value* cell : {first, second})
+          inner.push_back(
+              lookup256(builder, module, how, false, permutation, slot_of(builder, cell, hash, width), width));
+      }
     }
     hashes = std::move(inner);
   }
-  llvm::Value* i = index(0);
+  llvm::Value* i = index(0, 0);
+  llvm::Value* next_i = shape.adjacent ? nullptr : index(0, 1);
+  const auto knots = [&](llvm::Value* cell, llvm::Value* hash, int count) {
+    return knot_gradients(builder, module, how, tables, slot_of(builder, cell, hash, width), width, count,
+                          shape.dimensions);
+  };
   std::vector<llvm::Value*> gradients;
   for (llvm::Value* hash : hashes) {
     const std::vector<llvm::Value*> row =
-        knot_gradients(builder, module, how, tables, slot_of(builder, i, hash, width), width, 2, dimensions);
+        shape.adjacent ? knots(i, hash, 2) : side_by_side(knots(i, hash, 1), knots(next_i, hash, 1));
     gradients.insert(gradients.end(), row.begin(), row.end());
   }
   return gradients;
@@ -371,14 +426,15 @@ std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, ll
 // the four rows of knots around lattice cell (i, j, k) = cell[0..2], as
 // nodes/semantics/noise.h's for_each_noise_row hashes them: row 2 dk + dj
 // at slot (i + phi(j + phi(k)[dk])[dj]) mod n, its two knots' x, y and z.
-// st_gather256_knot_rows4_w<width>, with `dimensions` 4, the eight rows
-// around (i, j, k, l) as nodes/semantics/noise4.h hashes them, row 4 dl +
-// 2 dk + dj, its two knots' x, y, z and w. Lane by lane where memory is
-// read lane by lane.
-void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int width, int dimensions) {
-  llvm::Function* function = module.getFunction(std::string(dimensions == 4 ? "st_gather256_knot_rows4_w"
-                                                                            : "st_gather256_knot_rows_w") +
-                                                std::to_string(width));
+// st_gather256_knot_rows4_w<width>, the eight rows around (i, j, k, l) as
+// nodes/semantics/noise4.h hashes them, row 4 dl + 2 dk + dj, its two
+// knots' x, y, z and w. The _apart forms hash each axis's two cells by
+// their own indices (cell[2 axis + d]). Lane by lane where memory is read
+// lane by lane.
+void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int width, const KnotRowsShape& shape) {
+  llvm::Function* function = module.getFunction(std::string("st_gather256_knot_rows") +
+                                                (shape.dimensions == 4 ? "4" : "") + (shape.adjacent ? "" : "_apart") +
+                                                "_w" + std::to_string(width));
   if (!function || !function->isDeclaration()) return;
   llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
   auto args = function->arg_begin();
@@ -386,9 +442,8 @@ void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int wi
   llvm::Value* tables = &*args++;
   llvm::Value* cell_at = &*args;
   store_vectors(builder,
-                reads_interleaved(how)
-                    ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, dimensions)
-                    : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, dimensions),
+                reads_interleaved(how) ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, shape)
+                                       : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, shape),
                 out);
 }
 
@@ -479,7 +534,8 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
     for (int knots : {1, 2}) define_gradient_lookup(module, how, width, knots);
-    for (int dimensions : {3, 4}) define_knot_rows_lookup(module, how, width, dimensions);
+    for (int dimensions : {3, 4})
+      for (bool adjacent : {true, false}) define_knot_rows_lookup(module, how, width, {dimensions, adjacent});
     for (bool is_float : {true, false}) {
       define_pair_lookup(module, how, width, is_float);
       for (bool table256 : {false, true}) {

@@ -158,6 +158,33 @@ std::vector<llvm::BasicBlock*> block_part(llvm::Module& module, unsigned target)
   return {part};
 }
 
+// Addresses at constant offsets into the stack (GEPs of an alloca with
+// constant indices, which LICM hoists out of the loops) that `region`
+// reads, recomputed at its entry: passed in, each would be an argument of
+// the half, and a noise's knot-row slots are a hundred of them.
+void recompute_stack_addresses(const std::vector<llvm::BasicBlock*>& region) {
+  const llvm::SmallPtrSet<const llvm::BasicBlock*, 32> inside(region.begin(), region.end());
+  llvm::DenseMap<llvm::GetElementPtrInst*, llvm::Instruction*> copies;
+  llvm::Instruction* entry = &*region.front()->getFirstInsertionPt();
+  for (llvm::BasicBlock* block : region)
+    for (llvm::Instruction& instr : *block)
+      for (llvm::Use& use : instr.operands()) {
+        if (llvm::isa<llvm::PHINode>(instr)) break;  // its values come from the edges in
+        auto* address = llvm::dyn_cast<llvm::GetElementPtrInst>(use.get());
+        if (!address || inside.contains(address->getParent()) || !address->hasAllConstantIndices() ||
+            !llvm::isa<llvm::AllocaInst>(address->getPointerOperand()))
+          continue;
+        llvm::Instruction*& copy = copies[address];
+        if (!copy) {
+          copy = address->clone();
+          copy->insertBefore(entry);
+        }
+        use.set(copy);
+      }
+  for (auto& [address, copy] : copies)
+    if (address->use_empty()) address->eraseFromParent();
+}
+
 // `function` and the functions and globals it uses, directly or through
 // the functions it calls.
 llvm::SmallPtrSet<const llvm::GlobalValue*, 16> used_by(const llvm::Function& function) {
@@ -214,6 +241,7 @@ std::optional<llvm::SmallVector<char, 0>> split_off_half(llvm::Module& module, c
   if (region.empty()) region = block_part(module, total / 2);
   if (region.empty()) return std::nullopt;
   llvm::Function& function = *region.front()->getParent();
+  recompute_stack_addresses(region);
   const llvm::CodeExtractorAnalysisCache analyses(function);
   llvm::CodeExtractor extractor(region);
   if (!extractor.isEligible()) return std::nullopt;

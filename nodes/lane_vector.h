@@ -28,6 +28,9 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // gather256_knot_rows4, the 4D gradient pairs (x, y, z, w) of the eight
 // rows around cell (i, j, k, l) (nodes/semantics/noise4.h: row 4 dl + 2 dk
 // + dj), exist only in this lane (the semantics ask whether they do).
+// Given each axis's index, the second cell of an axis hashes as the index
+// + 1; given both cells' indices (the _apart forms, cell[2 axis + d]),
+// as its own index, which a periodic axis wraps.
 #define SHADETREE_VECTOR_GATHERS(W)                                                                          \
   extern "C" void st_gather_f32_w##W(floatv<W>* out, const float* table, const intv<W>* index);             \
   extern "C" void st_gather_i32_w##W(intv<W>* out, const std::int32_t* table, const intv<W>* index);        \
@@ -43,12 +46,29 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
   extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
                                                    const intv<W>* index);                                     \
   extern "C" void st_gather256_knot_rows_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell); \
-  extern "C" void st_gather256_knot_rows4_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell);
+  extern "C" void st_gather256_knot_rows4_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell); \
+  extern "C" void st_gather256_knot_rows_apart_w##W(floatv<W>* out, const NoiseTables* tables,                  \
+                                                    const intv<W>* cell);                                      \
+  extern "C" void st_gather256_knot_rows4_apart_w##W(floatv<W>* out, const NoiseTables* tables,                 \
+                                                     const intv<W>* cell);
 
 SHADETREE_VECTOR_GATHERS(4)
 SHADETREE_VECTOR_GATHERS(8)
 SHADETREE_VECTOR_GATHERS(16)
 #undef SHADETREE_VECTOR_GATHERS
+
+// A knot-rows lookup's rows, row[axis][knot], from what it stored:
+// r[(row * D + axis) * 2 + knot].
+template <int W, std::size_t D>
+using KnotRows = std::array<std::array<std::array<floatv<W>, 2>, D>, std::size_t{1} << (D - 1)>;
+template <int W, std::size_t D>
+KnotRows<W, D> knot_rows_from(const floatv<W>* r) {
+  KnotRows<W, D> rows;
+  for (std::size_t row = 0; row < rows.size(); ++row)
+    for (std::size_t axis = 0; axis < D; ++axis)
+      for (std::size_t knot = 0; knot < 2; ++knot) rows[row][axis][knot] = r[(row * D + axis) * 2 + knot];
+  return rows;
+}
 
 #define SHADETREE_VECTOR_LANES(W)                                                                             \
   inline floatv<W> select(intv<W> mask, floatv<W> a, floatv<W> b) { return mask ? a : b; }                  \
@@ -115,26 +135,33 @@ SHADETREE_VECTOR_GATHERS(16)
     st_gather256_gradient_pairs_w##W(result, &tables, &index);                                               \
     return {{{result[0], result[1]}, {result[2], result[3]}, {result[4], result[5]}}};                       \
   }                                                                                                          \
-  inline std::array<std::array<std::array<floatv<W>, 2>, 3>, 4> gather256_knot_rows(                          \
-      const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k) {                                          \
+  inline KnotRows<W, 3> gather256_knot_rows(const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k) {     \
     const intv<W> cell[3] = {i, j, k};                                                                       \
     floatv<W> r[24];                                                                                         \
     st_gather256_knot_rows_w##W(r, &tables, cell);                                                           \
-    return {{{{{r[0], r[1]}, {r[2], r[3]}, {r[4], r[5]}}},                                                   \
-             {{{r[6], r[7]}, {r[8], r[9]}, {r[10], r[11]}}},                                                 \
-             {{{r[12], r[13]}, {r[14], r[15]}, {r[16], r[17]}}},                                             \
-             {{{r[18], r[19]}, {r[20], r[21]}, {r[22], r[23]}}}}};                                           \
+    return knot_rows_from<W, 3>(r);                                                                          \
   }                                                                                                          \
-  inline std::array<std::array<std::array<floatv<W>, 2>, 4>, 8> gather256_knot_rows4(                         \
-      const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k, intv<W> l) {                               \
+  inline KnotRows<W, 4> gather256_knot_rows4(const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k,      \
+                                             intv<W> l) {                                                    \
     const intv<W> cell[4] = {i, j, k, l};                                                                    \
     floatv<W> r[64];                                                                                         \
     st_gather256_knot_rows4_w##W(r, &tables, cell);                                                          \
-    std::array<std::array<std::array<floatv<W>, 2>, 4>, 8> rows;                                             \
-    for (int row = 0; row < 8; ++row)                                                                        \
-      for (int axis = 0; axis < 4; ++axis)                                                                   \
-        for (int knot = 0; knot < 2; ++knot) rows[row][axis][knot] = r[8 * row + 2 * axis + knot];            \
-    return rows;                                                                                             \
+    return knot_rows_from<W, 4>(r);                                                                          \
+  }                                                                                                          \
+  inline KnotRows<W, 3> gather256_knot_rows(const NoiseTables& tables, std::array<intv<W>, 2> i,              \
+                                            std::array<intv<W>, 2> j, std::array<intv<W>, 2> k) {             \
+    const intv<W> cell[6] = {i[0], i[1], j[0], j[1], k[0], k[1]};                                           \
+    floatv<W> r[24];                                                                                         \
+    st_gather256_knot_rows_apart_w##W(r, &tables, cell);                                                     \
+    return knot_rows_from<W, 3>(r);                                                                          \
+  }                                                                                                          \
+  inline KnotRows<W, 4> gather256_knot_rows4(const NoiseTables& tables, std::array<intv<W>, 2> i,             \
+                                             std::array<intv<W>, 2> j, std::array<intv<W>, 2> k,             \
+                                             std::array<intv<W>, 2> l) {                                     \
+    const intv<W> cell[8] = {i[0], i[1], j[0], j[1], k[0], k[1], l[0], l[1]};                               \
+    floatv<W> r[64];                                                                                         \
+    st_gather256_knot_rows4_apart_w##W(r, &tables, cell);                                                    \
+    return knot_rows_from<W, 4>(r);                                                                          \
   }
 
 SHADETREE_VECTOR_LANES(4)

@@ -203,16 +203,30 @@ void for_each_noise_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax
   });
 }
 
+// The hash indices of an axis's two cells around a coordinate, for the
+// knot-rows lookups of an axis that wraps (gather256_knot_rows with
+// pairs of indices).
+template <class Axis>
+auto cell_indices(const Axis& axis) {
+  return std::array{axis.index(0), axis.index(1)};
+}
+
 // The rows of for_each_noise_row (3D) with their knots' gradients:
 // visit(gradients, u, v, w), the gradients as KnotRow::gradients gives
-// them. On the lattice, lanes that can look up all four rows in one go do
-// (the JIT, reading memory lane by lane, then hashes each lane in general
-// registers: codegen/table_lookups.cpp).
+// them. Lanes that can look up all four rows in one go do (the JIT,
+// reading memory lane by lane, then hashes each lane in general
+// registers: codegen/table_lookups.cpp), from each axis's index on the
+// lattice and from both cells' indices where an axis wraps.
 template <class F, class Axis, class Visit>
 void for_each_noise_gradient_row(const NoiseTables& tables, F x, F y, F z, const Axis& ax, const Axis& ay,
                                  const Axis& az, Visit visit) {
-  if constexpr (Axis::next_cell_hashes_next && LooksUpKnotRows<IntOf<F>>::value) {
-    const auto rows = gather256_knot_rows(tables, ax.index(0), ay.index(0), az.index(0));
+  if constexpr (LooksUpKnotRows<IntOf<F>>::value) {
+    const auto rows = [&] {
+      if constexpr (Axis::next_cell_hashes_next)
+        return gather256_knot_rows(tables, ax.index(0), ay.index(0), az.index(0));
+      else
+        return gather256_knot_rows(tables, cell_indices(ax), cell_indices(ay), cell_indices(az));
+    }();
     for_each_row_offset(x, y, z, ax, ay, az, [&](auto dk, auto dj, const std::array<F, 2>& u, F v, F w) {
       visit(rows[2 * dk + dj], u, v, w);
     });

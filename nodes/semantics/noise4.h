@@ -65,14 +65,19 @@ struct LooksUpKnotRows4<I, std::void_t<decltype(gather256_knot_rows4(std::declva
     : std::true_type {};
 
 // The rows of for_each_noise4_row with their knots' 4D gradients:
-// visit(g, u, v, s, t), g[axis][knot] for axes x, y, z, w. On the lattice,
-// lanes that can look up all eight rows in one go do, as
-// for_each_noise_gradient_row does in 3D.
+// visit(g, u, v, s, t), g[axis][knot] for axes x, y, z, w. Lanes that can
+// look up all eight rows in one go do, as for_each_noise_gradient_row
+// does in 3D.
 template <class F, class Axis, class Visit>
 void for_each_noise4_gradient_row(const NoiseTables& tables, F x, F y, F z, F w, const Axis& ax, const Axis& ay,
                                   const Axis& az, const Axis& aw, Visit visit) {
-  if constexpr (Axis::next_cell_hashes_next && LooksUpKnotRows4<IntOf<F>>::value) {
-    const auto rows = gather256_knot_rows4(tables, ax.index(0), ay.index(0), az.index(0), aw.index(0));
+  if constexpr (LooksUpKnotRows4<IntOf<F>>::value) {
+    const auto rows = [&] {
+      if constexpr (Axis::next_cell_hashes_next)
+        return gather256_knot_rows4(tables, ax.index(0), ay.index(0), az.index(0), aw.index(0));
+      else
+        return gather256_knot_rows4(tables, cell_indices(ax), cell_indices(ay), cell_indices(az), cell_indices(aw));
+    }();
     F fw = w - aw.corner();
     each_of_0_and_1([&](auto dl) {
       F t = fw - float(dl);
