@@ -215,7 +215,7 @@ std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm
 // lookups of each component's table.
 std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how,
                                          llvm::Value* tables, llvm::Value* index, int width, int knots,
-                                         int components = 3) {
+                                         int components) {
   if (reads_interleaved(how))
     return interleaved_gradients(builder, tables, width, knots, components,
                                  [&](int lane) { return builder.CreateExtractElement(index, lane); });
@@ -234,25 +234,6 @@ std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Modul
     }
   }
   return gradients;
-}
-
-// st_gather256_gradients_w<width>(out, tables, index), one knot's
-// gradient, and st_gather256_gradient_pairs_w<width>(out, tables, index),
-// a knot row's (index and index + 1): from the three hashed gradient
-// tables, x then y then z. Read lane by lane, the interleaved table gives
-// each knot's three components with one load a lane instead of three;
-// otherwise lookups of each table.
-void define_gradient_lookup(llvm::Module& module, const Lookups256& how, int width, int knots) {
-  llvm::Function* function = module.getFunction(
-      std::string(knots == 2 ? "st_gather256_gradient_pairs_w" : "st_gather256_gradients_w") + std::to_string(width));
-  if (!function || !function->isDeclaration()) return;
-  llvm::IRBuilder<> builder(llvm::BasicBlock::Create(module.getContext(), "entry", function));
-  auto args = function->arg_begin();
-  llvm::Value* out = &*args++;
-  llvm::Value* tables = &*args++;
-  llvm::Value* index =
-      builder.CreateLoad(llvm::FixedVectorType::get(builder.getInt32Ty(), static_cast<unsigned>(width)), &*args);
-  store_vectors(builder, knot_gradients(builder, module, how, tables, index, width, knots), out);
 }
 
 // (index + hash) mod n, the slot a hash reaches from an index: vectors of
@@ -533,7 +514,6 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
     const Lookups256 how{in_register ? GatherStrategy::hardware : strategy, in_register && float_tables_in_registers,
                          in_register && byte_permutes};
     define_small_table_lookup(module, strategy, width, in_register);
-    for (int knots : {1, 2}) define_gradient_lookup(module, how, width, knots);
     for (int dimensions : {3, 4})
       for (bool adjacent : {true, false}) define_knot_rows_lookup(module, how, width, {dimensions, adjacent});
     for (bool is_float : {true, false}) {

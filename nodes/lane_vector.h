@@ -20,10 +20,8 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
 // Table lookups are declared here and defined by the code generator
 // (codegen/table_lookups.cpp), which picks the instruction sequence per
 // target: a hardware gather, one load per lane, or permutes of registers.
-// gather256_gradients and gather256_gradient_pairs, the three hashed
-// gradient tables at index (and with pairs at index + 1: out is x at both,
-// then y, then z), gather256_knot_rows, those pairs of the four rows of
-// knots around lattice cell (i, j, k) (nodes/semantics/noise.h,
+// gather256_knot_rows, the hashed gradients (x, y, z) of both knots of
+// the four rows around lattice cell (i, j, k) (nodes/semantics/noise.h,
 // for_each_noise_row: out is row 0's six, then row 1's, ...), and
 // gather256_knot_rows4, the 4D gradient pairs (x, y, z, w) of the eight
 // rows around cell (i, j, k, l) (nodes/semantics/noise4.h: row 4 dl + 2 dk
@@ -42,9 +40,6 @@ using intv = std::int32_t __attribute__((ext_vector_type(W)));
                                              const intv<W>* index);                                          \
   extern "C" void st_gather_small_f32_w##W(floatv<W>* out, const float* table, std::int32_t count,           \
                                            std::int32_t stride, const intv<W>* index);                      \
-  extern "C" void st_gather256_gradients_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* index); \
-  extern "C" void st_gather256_gradient_pairs_w##W(floatv<W>* out, const NoiseTables* tables,                  \
-                                                   const intv<W>* index);                                     \
   extern "C" void st_gather256_knot_rows_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell); \
   extern "C" void st_gather256_knot_rows4_w##W(floatv<W>* out, const NoiseTables* tables, const intv<W>* cell); \
   extern "C" void st_gather256_knot_rows_apart_w##W(floatv<W>* out, const NoiseTables* tables,                  \
@@ -123,17 +118,6 @@ KnotRows<W, D> knot_rows_from(const floatv<W>* r) {
     floatv<W> result;                                                                                        \
     st_gather_small_f32_w##W(&result, table, count, stride, &index);                                         \
     return result;                                                                                           \
-  }                                                                                                          \
-  inline std::array<floatv<W>, 3> gather256_gradients(const NoiseTables& tables, intv<W> index) {            \
-    std::array<floatv<W>, 3> result;                                                                         \
-    st_gather256_gradients_w##W(result.data(), &tables, &index);                                             \
-    return result;                                                                                           \
-  }                                                                                                          \
-  inline std::array<std::array<floatv<W>, 2>, 3> gather256_gradient_pairs(const NoiseTables& tables,        \
-                                                                          intv<W> index) {                  \
-    floatv<W> result[6];                                                                                     \
-    st_gather256_gradient_pairs_w##W(result, &tables, &index);                                               \
-    return {{{result[0], result[1]}, {result[2], result[3]}, {result[4], result[5]}}};                       \
   }                                                                                                          \
   inline KnotRows<W, 3> gather256_knot_rows(const NoiseTables& tables, intv<W> i, intv<W> j, intv<W> k) {     \
     const intv<W> cell[3] = {i, j, k};                                                                       \

@@ -122,18 +122,8 @@ auto entries_at_cells(const T* table, const Axis& axis, I hash) {
   }
 }
 
-// Whether lanes of index type I read the interleaved gradient table
-// (gather256_gradients and gather256_gradient_pairs, which only
-// nodes/lane_vector.h declares; asking for the pairs tells of both).
-template <class I, class = void>
-struct ReadsInterleavedGradients : std::false_type {};
-template <class I>
-struct ReadsInterleavedGradients<
-    I, std::void_t<decltype(gather256_gradient_pairs(std::declval<const NoiseTables&>(), std::declval<I>()))>>
-    : std::true_type {};
-
-// Whether lanes of index type I look up the gradients of a lattice cell's
-// four rows of knots in one go (gather256_knot_rows, which only
+// Whether lanes of index type I look up the gradients of a cell's four
+// rows of knots in one go (gather256_knot_rows, which only
 // nodes/lane_vector.h declares).
 template <class I, class = void>
 struct LooksUpKnotRows : std::false_type {};
@@ -150,21 +140,13 @@ struct KnotRow {
   I hash_jk;
   I slot(int di) const { return cell_slot(x_axis, hash_jk, di); }
   auto entries(const float* table) const { return entries_at_cells(table, x_axis, hash_jk); }
-  // The knots' gradients G[phi(slot)]: x at both knots, then y, then z. The
-  // JIT's lanes take all six in one lookup (two where a periodic axis
-  // wraps the row's second cell), which reads the interleaved table where
-  // memory is read lane by lane (codegen/table_lookups.cpp).
+  // The knots' gradients G[phi(slot)]: x at both knots, then y, then z
+  // (the JIT's lanes read a cell's rows at once instead:
+  // for_each_noise_gradient_row).
   std::array<std::array<decltype(gather256(static_cast<const float*>(nullptr), I{})), 2>, 3> gradients(
       const NoiseTables& tables) const {
-    if constexpr (Axis::next_cell_hashes_next && ReadsInterleavedGradients<I>::value) {
-      return gather256_gradient_pairs(tables, slot(0));
-    } else if constexpr (ReadsInterleavedGradients<I>::value) {
-      const auto at = gather256_gradients(tables, slot(0)), next = gather256_gradients(tables, slot(1));
-      return {{{at[0], next[0]}, {at[1], next[1]}, {at[2], next[2]}}};
-    } else {
-      return {entries(tables.hashed_gradient_x.data()), entries(tables.hashed_gradient_y.data()),
-              entries(tables.hashed_gradient_z.data())};
-    }
+    return {entries(tables.hashed_gradient_x.data()), entries(tables.hashed_gradient_y.data()),
+            entries(tables.hashed_gradient_z.data())};
   }
 };
 
