@@ -210,15 +210,12 @@ std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm
 }
 
 // The hashed gradients of the knots at slot `index` (and with `knots` 2
-// at index + 1): x at each knot, then y, then z, then with `components` 4
-// the 4D w (gradient_x at the slot); from the interleaved table or by
-// lookups of each component's table.
+// at index + 1) by lookups of each component's table: x at each knot,
+// then y, then z, then with `components` 4 the 4D w (gradient_x at the
+// slot).
 std::vector<llvm::Value*> knot_gradients(llvm::IRBuilder<>& builder, llvm::Module& module, const Lookups256& how,
                                          llvm::Value* tables, llvm::Value* index, int width, int knots,
                                          int components) {
-  if (reads_interleaved(how))
-    return interleaved_gradients(builder, tables, width, knots, components,
-                                 [&](int lane) { return builder.CreateExtractElement(index, lane); });
   const std::array<std::size_t, 4> offsets{offsetof(NoiseTables, hashed_gradient_x),
                                            offsetof(NoiseTables, hashed_gradient_y),
                                            offsetof(NoiseTables, hashed_gradient_z), offsetof(NoiseTables, gradient_x)};
