@@ -279,10 +279,10 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
                                                 llvm::Value* tables, llvm::Value* cell_at, int width,
                                                 const KnotRowsShape& shape) {
   llvm::Type* int32 = builder.getInt32Ty();
-  const int knots_apart = shape.adjacent ? 1 : 2;  // slots kept per row
+  const int slots_per_row = shape.adjacent ? 1 : 2;  // a row's second knot is its first + 1 where adjacent
   llvm::Value* permutation = noise_table(builder, tables, offsetof(NoiseTables, permutation));
   llvm::Value* slots = builder.CreateAlloca(
-      llvm::ArrayType::get(int32, static_cast<std::uint64_t>(shape.rows() * knots_apart * width)));
+      llvm::ArrayType::get(int32, static_cast<std::uint64_t>(shape.rows() * slots_per_row * width)));
   // Element `lane` of group `group` of a [group][lane] block of i32s.
   const auto in_group = [&](int group, auto lane) {
     return builder.CreateAdd(builder.getInt64(static_cast<std::uint64_t>(group * width)), lane);
@@ -318,7 +318,7 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   lane->addIncoming(builder.getInt64(0), before);
   for (int axis = 0; axis < shape.dimensions; ++axis) {
     std::array<llvm::Value*, 2> at{};
-    for (int d = 0; d < knots_apart; ++d)
+    for (int d = 0; d < slots_per_row; ++d)
       at[static_cast<std::size_t>(d)] = builder.CreateAlignedLoad(
           int32, builder.CreateInBoundsGEP(int32, cell_at, in_group(shape.cell_group(axis, d), lane)), llvm::Align(4));
     index.push_back(at);
@@ -327,9 +327,9 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
   // next axis's cells, and the rows come out in the order 4 dl + 2 dk + dj.
   const auto hash_rows = [&](const auto& self, int axis, llvm::Value* hash, int row) -> void {
     if (axis == 0) {
-      for (int d = 0; d < knots_apart; ++d)
+      for (int d = 0; d < slots_per_row; ++d)
         builder.CreateAlignedStore(slot_of(builder, index[0][static_cast<std::size_t>(d)], hash, width),
-                                   builder.CreateInBoundsGEP(int32, slots, in_group(knots_apart * row + d, lane)),
+                                   builder.CreateInBoundsGEP(int32, slots, in_group(slots_per_row * row + d, lane)),
                                    llvm::Align(4));
       return;
     }
