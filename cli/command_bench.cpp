@@ -41,6 +41,7 @@ struct BenchArguments {
   int repetitions = 7;
   bool json = false;
   std::string gathers;
+  int width = 0;  // 0: the host's widest
   bool quick = false;
 };
 
@@ -123,7 +124,7 @@ Status bench_driver(const LoadedGraph& loaded, const TextureView& view, const st
                     const BenchArguments& arguments, nlohmann::ordered_json& results, DriverRows& table) {
   RenderRequest request;
   request.size = {view.width, view.height};
-  request.lane_width = host_vector_width();
+  request.lane_width = arguments.width > 0 ? arguments.width : host_vector_width();
   for (const MeasuredBackend& backend : backends)
     for (int threads : {1, arguments.threads}) {
       request.threads = threads;
@@ -186,13 +187,13 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (arguments.quick) settings.optimization = Optimization::quick;
     JitSettings cold_settings = settings;
     cold_settings.cold = true;
-    Result<CompiledKernel> cold = compile_kernel(loaded->ir, 0, cold_settings);
+    Result<CompiledKernel> cold = compile_kernel(loaded->ir, arguments.width, cold_settings);
     if (!cold) return report(cold.error());
-    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, 0, settings);
+    Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, arguments.width, settings);
     if (!jit) return report(jit.error());
     std::optional<double> cached_milliseconds;  // quick kernels are never cached
     if (!arguments.quick) {
-      Result<CompiledKernel> cached = compile_kernel(loaded->ir, 0, settings);
+      Result<CompiledKernel> cached = compile_kernel(loaded->ir, arguments.width, settings);
       if (!cached) return report(cached.error());
       cached_milliseconds = cached->compile_milliseconds;
     }
@@ -265,6 +266,8 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
   command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register, in-register-bytes or bytes-and-gathers (default: the host's)")
       ->check(CLI::IsMember(gather_strategies));
+  command->add_option("--width", arguments->width, "JIT vector width: 4, 8 or 16 (default: the host's widest)")
+      ->check(CLI::IsMember({4, 8, 16}));
   command->add_flag("--quick", arguments->quick,
                     "measure the JIT's quick kernels (the editor's first previews of an edit) instead of its full ones");
   command->callback([&run, arguments] { run = [arguments] { return bench(*arguments); }; });

@@ -39,16 +39,22 @@ bool host_is_amd() {
 }  // namespace
 
 // Measured with `shadetree bench --gathers` on both vendors (figures in
-// docs/architecture.md, "Table lookups"): per-lane loads, which read a
-// knot row's gradients from the interleaved table, beat vpgatherqq pairs
-// without AVX-512. With it, AMD's gathers are slow and permutes over
-// registers win, the permutation as bytes (VBMI) cheapest; Intel's
-// gathers beat the permute tree over sixteen registers of a float table,
-// so there only the permutation is held in registers.
+// docs/architecture.md, "Table lookups"): per-lane loads, which hash a
+// noise cell's rows in general registers and read each knot's gradient
+// from the interleaved table, beat every other strategy without AVX-512
+// and on Zen 5, whose 512-bit units are whole. Zen 4 splits 512-bit
+// operations and was measured (before the rows were hashed in general
+// registers) to prefer permutes over registers, the permutation as bytes
+// (VBMI) cheapest; Intel's gathers beat the permute tree over sixteen
+// registers of a float table, so there only the permutation is held in
+// registers.
 GatherStrategy host_gather_strategy() {
   if (host_vector_width() < 16) return GatherStrategy::per_lane;
   const bool vbmi = host_has("avx512vbmi");
-  if (host_is_amd()) return vbmi ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
+  if (host_is_amd()) {
+    if (host_cpu_name() != "znver4") return GatherStrategy::per_lane;
+    return vbmi ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
+  }
   return vbmi ? GatherStrategy::byte_permutes_and_gathers : GatherStrategy::hardware;
 }
 

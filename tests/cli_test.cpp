@@ -669,6 +669,19 @@ TEST_F(Cli, BenchMeasuresQuickKernels) {
   EXPECT_GT(result["jit_sps_1t"].get<double>(), 0.0);
 }
 
+// Kernels of any width are measured; other widths are usage errors.
+TEST_F(Cli, BenchMeasuresTheKernelsOfAGivenWidth) {
+  for (const char* width : {"4", "8"}) {
+    const CommandResult run =
+        shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --width " + width);
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_GT(nlohmann::json::parse(run.out)[0]["jit_sps_1t"].get<double>(), 0.0) << width;
+  }
+  const CommandResult odd = shadetree("bench " + gallery + "marble.json --size 16x16 --width 3");
+  EXPECT_EQ(odd.status, 2);
+  EXPECT_NE(odd.err.find("--width"), std::string::npos) << odd.err;
+}
+
 TEST_F(Cli, BenchMarchesVolumeGraphs) {
   const CommandResult run =
       shadetree("bench " + gallery + "noisy_sphere.json --size 32x32 --repetitions 1 --threads 2 --json");
