@@ -51,7 +51,8 @@ const std::map<std::string, GatherStrategy> gather_strategies = {
     {"per-lane", GatherStrategy::per_lane},
     {"in-register", GatherStrategy::in_register},
     {"in-register-bytes", GatherStrategy::in_register_byte_permutes},
-    {"bytes-and-gathers", GatherStrategy::byte_permutes_and_gathers}};
+    {"bytes-and-gathers", GatherStrategy::byte_permutes_and_gathers},
+    {"bytes-and-per-lane", GatherStrategy::byte_permutes_and_per_lane}};
 
 struct Samples {
   std::size_t count = 0;
@@ -264,7 +265,7 @@ void add_bench_command(CLI::App& app, CommandRunner& run) {
   command->add_option("--repetitions", arguments->repetitions, "timed runs per measurement (default 7)")
       ->check(CLI::Range(1, 1000));
   command->add_flag("--json", arguments->json, "print a JSON array, one object per graph");
-  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register, in-register-bytes or bytes-and-gathers (default: the host's)")
+  command->add_option("--gathers", arguments->gathers, "JIT table lookups: hardware, per-lane, in-register, in-register-bytes, bytes-and-gathers or bytes-and-per-lane (default: the host's)")
       ->check(CLI::IsMember(gather_strategies));
   command->add_option("--width", arguments->width, "JIT vector width: 4, 8 or 16 (default: the host's widest)")
       ->check(CLI::IsMember({4, 8, 16}));

@@ -49,9 +49,18 @@ UniformStateLayout uniform_state_layout(const ShadeIR& ir);
 // at width 16 (AVX-512), permutes over the 256-entry noise tables held in
 // registers and hardware gathers for the other tables (splines); the same
 // with the noise permutation looked up as bytes (AVX-512 VBMI); or the
-// permutation as bytes and every float table by hardware gathers. Spline
-// knots (up to 32 floats) are in registers in the last three.
-enum class GatherStrategy { hardware, per_lane, in_register, in_register_byte_permutes, byte_permutes_and_gathers };
+// permutation as bytes and every float table by hardware gathers; or the
+// permutation as bytes and everything else one lane at a time (noise
+// rows hashed in general registers, as per-lane does). Spline knots (up
+// to 32 floats) are in registers in the last four.
+enum class GatherStrategy {
+  hardware,
+  per_lane,
+  in_register,
+  in_register_byte_permutes,
+  byte_permutes_and_gathers,
+  byte_permutes_and_per_lane
+};
 
 // Which module of a kernel to emit: the whole kernel, or a part of one
 // split in two (codegen/kernel_split.h). The first part's module defines

@@ -497,20 +497,32 @@ void define_small_table_lookup(llvm::Module& module, GatherStrategy strategy, in
   builder.CreateRetVoid();
 }
 
+// How a strategy reads the tables it does not hold in registers.
+GatherStrategy memory_strategy(GatherStrategy strategy) {
+  switch (strategy) {
+    case GatherStrategy::per_lane:
+    case GatherStrategy::byte_permutes_and_per_lane:
+      return GatherStrategy::per_lane;
+    default:
+      return GatherStrategy::hardware;
+  }
+}
+
 }  // namespace
 
 void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
   const bool byte_permutes = strategy == GatherStrategy::in_register_byte_permutes ||
-                             strategy == GatherStrategy::byte_permutes_and_gathers;
+                             strategy == GatherStrategy::byte_permutes_and_gathers ||
+                             strategy == GatherStrategy::byte_permutes_and_per_lane;
   const bool float_tables_in_registers =
       strategy == GatherStrategy::in_register || strategy == GatherStrategy::in_register_byte_permutes;
   const bool register_strategy = float_tables_in_registers || byte_permutes;
   llvm::LLVMContext& context = module.getContext();
   for (int width : {4, 8, 16}) {
     const bool in_register = register_strategy && width == 16;
-    const Lookups256 how{in_register ? GatherStrategy::hardware : strategy, in_register && float_tables_in_registers,
+    const Lookups256 how{memory_strategy(strategy), in_register && float_tables_in_registers,
                          in_register && byte_permutes};
-    define_small_table_lookup(module, strategy, width, in_register);
+    define_small_table_lookup(module, memory_strategy(strategy), width, in_register);
     for (int dimensions : {3, 4})
       for (bool adjacent : {true, false}) define_knot_rows_lookup(module, how, width, {dimensions, adjacent});
     for (bool is_float : {true, false}) {

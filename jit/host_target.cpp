@@ -42,19 +42,19 @@ bool host_is_amd() {
 // docs/architecture.md, "Table lookups"): per-lane loads, which hash a
 // noise cell's rows in general registers and read each knot's gradient
 // from the interleaved table, beat every other strategy without AVX-512
-// and on Zen 5, whose 512-bit units are whole. Zen 4 splits 512-bit
-// operations and was measured (before the rows were hashed in general
-// registers) to prefer permutes over registers, the permutation as bytes
-// (VBMI) cheapest; Intel's gathers beat the permute tree over sixteen
-// registers of a float table, so there only the permutation is held in
-// registers.
+// and on Zen 5, whose 512-bit units are whole; there the permutation's
+// other lookups (cellular noise's hashes) are fastest as bytes in
+// registers (VBMI). Zen 4 splits 512-bit operations and was measured
+// (before rows were hashed in general registers) to prefer permutes over
+// registers, the permutation as bytes cheapest; Intel's gathers beat the
+// permute tree over sixteen registers of a float table, so there only the
+// permutation is held in registers.
 GatherStrategy host_gather_strategy() {
   if (host_vector_width() < 16) return GatherStrategy::per_lane;
   const bool vbmi = host_has("avx512vbmi");
-  if (host_is_amd()) {
-    if (host_cpu_name() != "znver4") return GatherStrategy::per_lane;
+  if (host_is_amd() && host_cpu_name() == "znver4")
     return vbmi ? GatherStrategy::in_register_byte_permutes : GatherStrategy::in_register;
-  }
+  if (host_is_amd()) return vbmi ? GatherStrategy::byte_permutes_and_per_lane : GatherStrategy::per_lane;
   return vbmi ? GatherStrategy::byte_permutes_and_gathers : GatherStrategy::hardware;
 }
 

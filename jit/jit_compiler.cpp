@@ -73,11 +73,13 @@ GatherStrategy effective_gathers(const JitSettings& settings) {
   const GatherStrategy wanted = settings.gathers.value_or(host_gather_strategy());
   const bool needs_avx512 = wanted == GatherStrategy::in_register ||
                             wanted == GatherStrategy::in_register_byte_permutes ||
-                            wanted == GatherStrategy::byte_permutes_and_gathers;
+                            wanted == GatherStrategy::byte_permutes_and_gathers ||
+                            wanted == GatherStrategy::byte_permutes_and_per_lane;
   if (needs_avx512 && host_vector_width() < 16) return GatherStrategy::per_lane;
   if (!host_has("avx512vbmi")) {
     if (wanted == GatherStrategy::in_register_byte_permutes) return GatherStrategy::in_register;
     if (wanted == GatherStrategy::byte_permutes_and_gathers) return GatherStrategy::hardware;
+    if (wanted == GatherStrategy::byte_permutes_and_per_lane) return GatherStrategy::per_lane;
   }
   return wanted;
 }

@@ -93,7 +93,8 @@ TEST_P(GalleryDifferential, BackendsAgreeAtEveryWidth) {
       << "hardware gathers at width 8";
   if (host_vector_width() < 16) return;  // the other strategies need AVX-512 at width 16
   for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
-                                 GatherStrategy::in_register_byte_permutes, GatherStrategy::byte_permutes_and_gathers})
+                                 GatherStrategy::in_register_byte_permutes, GatherStrategy::byte_permutes_and_gathers,
+                                 GatherStrategy::byte_permutes_and_per_lane})
     EXPECT_EQ(compare_backends(GetParam(), loaded->ir, loaded->params, 16, gathers), "")
         << "gather strategy " << static_cast<int>(gathers);
 }
@@ -218,7 +219,8 @@ TEST(NodeDifferential, SplinesAgreeEitherSideOfTheRegisterTableSizes) {
     if (host_vector_width() < 16) continue;
     for (GatherStrategy gathers : {GatherStrategy::hardware, GatherStrategy::per_lane, GatherStrategy::in_register,
                                    GatherStrategy::in_register_byte_permutes,
-                                   GatherStrategy::byte_permutes_and_gathers})
+                                   GatherStrategy::byte_permutes_and_gathers,
+                                   GatherStrategy::byte_permutes_and_per_lane})
       EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, 16, gathers), "")
           << "gather strategy " << static_cast<int>(gathers);
   }
