@@ -522,6 +522,10 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
     const bool in_register = register_strategy && width == 16;
     const Lookups256 how{memory_strategy(strategy), in_register && float_tables_in_registers,
                          in_register && byte_permutes};
+    // Tables of any size (a mesh's distance grid, an image) by one gather
+    // an instruction where per-lane reads only pay for noise rows.
+    const GatherStrategy large_tables =
+        strategy == GatherStrategy::byte_permutes_and_per_lane ? GatherStrategy::hardware : how.memory;
     define_small_table_lookup(module, memory_strategy(strategy), width, in_register);
     for (int dimensions : {3, 4})
       for (bool adjacent : {true, false}) define_knot_rows_lookup(module, how, width, {dimensions, adjacent});
@@ -540,7 +544,7 @@ void define_table_lookups(llvm::Module& module, GatherStrategy strategy) {
         llvm::Value* index = builder.CreateLoad(index_type, &*args);
         llvm::Type* element = is_float ? builder.getFloatTy() : builder.getInt32Ty();
         builder.CreateStore(table256 ? lookup256(builder, module, how, is_float, table, index, width)
-                                     : memory_lookup(builder, how.memory, element, table, index, width),
+                                     : memory_lookup(builder, large_tables, element, table, index, width),
                             out);
         builder.CreateRetVoid();
       }

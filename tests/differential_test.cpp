@@ -338,20 +338,25 @@ TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
 // antialiased); of the fireball at width 16, the same; of
 // eroded_cube, its first octave loop; of mesh_hypertexture at width 16, a
 // stretch that reads the mesh, which stays in the other module (exported
-// as "..._half.data0"). The result is the interpreter's to the bit.
+// as "..._half.data0"). Their sizes are per-lane lookups' (other
+// strategies read the mesh by gathers, and it compiles whole). The result
+// is the interpreter's to the bit.
 TEST(SplitKernelDifferential, KernelsGeneratedInHalvesAgree) {
   const std::vector<std::pair<const char*, std::vector<int>>> halved = {
       {"looping_turbulence", {8}}, {"fireball", {16}}, {"eroded_cube", {8, 16}}, {"mesh_hypertexture", {16}}};
+  JitSettings per_lane;
+  per_lane.gathers = GatherStrategy::per_lane;
   for (const auto& [name, widths] : halved) {
     Result<LoadedGraph> loaded = testing::load_gallery_graph(std::string(SHADETREE_SOURCE_DIR "/graphs/") + name + ".json");
     ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
     for (int width : widths) {
-      Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir);
+      Result<std::string> listing = kernel_listing(loaded->ir, width, Listing::optimized_llvm_ir, per_lane);
       ASSERT_TRUE(listing.ok()) << listing.error().to_string();
       EXPECT_NE(listing->find("; the half of this module compiled on a thread of its own"), std::string::npos)
           << name << " at width " << width << ": generated whole";
       if (std::string(name) == "mesh_hypertexture") EXPECT_NE(listing->find("_half.data0"), std::string::npos);
       EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width), "");
+      EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width, GatherStrategy::per_lane), "");
       EXPECT_EQ(compare_backends(name, loaded->ir, loaded->params, width, GatherStrategy::hardware), "");
     }
   }
