@@ -53,7 +53,7 @@ namespace {
 
 class KernelEmitter {
  public:
-  KernelEmitter(const ShadeIR& ir, int width, llvm::Module& module)
+  KernelEmitter(const ShadeIR& ir, int width, llvm::Module& module, const std::string& data_symbol)
       : ir_(ir),
         width_(width),
         module_(module),
@@ -70,15 +70,18 @@ class KernelEmitter {
     // The graph's data (spline knots, images, meshes) as raw bytes: LLVM
     // writes a byte array to the object in one piece, where it wrote an
     // array of floats one element at a time (2.4 MB of image took 40 ms).
-    // Loads at constant offsets still fold.
-    if (!ir_.data.empty()) {
-      const llvm::ArrayRef<std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(ir_.data.data()),
-                                               ir_.data.size() * sizeof(float));
-      data_ = new llvm::GlobalVariable(module_, llvm::ArrayType::get(builder_.getInt8Ty(), bytes.size()), true,
-                                       llvm::GlobalValue::InternalLinkage,
+    // Loads at constant offsets still fold. Large data is declared only
+    // (max_embedded_data_bytes), and read through the global offset table.
+    const std::size_t size = ir_.data.size() * sizeof(float);
+    auto* type = llvm::ArrayType::get(builder_.getInt8Ty(), size);
+    if (size > max_embedded_data_bytes) {
+      data_ = new llvm::GlobalVariable(module_, type, true, llvm::GlobalValue::ExternalLinkage, nullptr, data_symbol);
+    } else if (size > 0) {
+      const llvm::ArrayRef<std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(ir_.data.data()), size);
+      data_ = new llvm::GlobalVariable(module_, type, true, llvm::GlobalValue::InternalLinkage,
                                        llvm::ConstantDataArray::get(context_, bytes), "shade_data");
-      data_->setAlignment(llvm::Align(alignof(float)));
     }
+    if (data_) data_->setAlignment(llvm::Align(alignof(float)));
   }
 
   // void bind(const float* params, const float* uniform_globals, float* state)
@@ -610,7 +613,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   // first kernel that defined it, which may be released before this one.
   for (llvm::GlobalVariable& global : module->globals())
     if (!global.isDeclaration()) global.setLinkage(llvm::GlobalValue::InternalLinkage);
-  KernelEmitter emitter(ir, width, *module);
+  KernelEmitter emitter(ir, width, *module, kernel_data_symbol(function_name));
   std::vector<llvm::Function*> entry_points;
   if (part == KernelPart::first) {
     Result<llvm::Function*> first = emitter.emit_part(function_name + "_first", split, true);

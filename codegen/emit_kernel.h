@@ -15,6 +15,7 @@
 // NAME_bind and NAME_run are the same functions.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -70,6 +71,16 @@ enum class GatherStrategy {
 //                   int64_t start, int64_t end);
 // the second's defines NAME_bind and NAME_run, which calls NAME_first.
 enum class KernelPart { whole, first, second };
+
+// Graph data larger than this (images, meshes) is not written into a
+// kernel's module: the module declares it as `function_name` + "_data",
+// which whoever links the kernel binds to a copy of `ShadeIR::data` (the
+// JIT, jit/jit_compiler.cpp), so that a compile does not copy it through
+// a constant, an object and a linked segment.
+inline constexpr std::size_t max_embedded_data_bytes = 64 * 1024;
+
+// The symbol of a kernel's data past max_embedded_data_bytes.
+inline std::string kernel_data_symbol(const std::string& function_name) { return function_name + "_data"; }
 
 // The module holds the kernel's functions (`function_name` + "_bind" and
 // "_run", or the part's) and the op library they call, marked for

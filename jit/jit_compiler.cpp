@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -28,6 +29,7 @@
 #include <llvm/Support/xxhash.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include "codegen/emit_kernel.h"
 #include "codegen/kernel_split.h"
 #include "codegen/op_library.h"
 #include "jit/host_target.h"
@@ -44,10 +46,10 @@ std::atomic<long> resident_kernels{0};
 }  // namespace
 
 struct KernelCode {
-  KernelCode(std::string name, llvm::orc::ResourceTrackerSP tracker, const CompiledKernel& functions,
-             std::recursive_mutex& jit_mutex)
-      : name(std::move(name)), tracker(std::move(tracker)), bind(functions.bind), run(functions.run),
-        width(functions.width), jit_mutex(jit_mutex) {
+  KernelCode(std::string name, llvm::orc::ResourceTrackerSP tracker, std::shared_ptr<const std::vector<float>> data,
+             const CompiledKernel& functions, std::recursive_mutex& jit_mutex)
+      : name(std::move(name)), tracker(std::move(tracker)), data(std::move(data)), bind(functions.bind),
+        run(functions.run), width(functions.width), jit_mutex(jit_mutex) {
     ++resident_kernels;
   }
   // Removes the code under the JIT's lock, so a compile of the same
@@ -59,6 +61,7 @@ struct KernelCode {
   }
   std::string name;
   llvm::orc::ResourceTrackerSP tracker;
+  std::shared_ptr<const std::vector<float>> data;  // the data its code reads past max_embedded_data_bytes
   KernelBindFunction bind;
   KernelRunFunction run;
   int width;
@@ -197,7 +200,7 @@ class Jit {
       Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
       if (!objects) return objects.error();
       std::lock_guard lock(mutex_);
-      Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(*objects));
+      Result<std::shared_ptr<const KernelCode>> code = add_objects(ir, name, width, std::move(*objects));
       if (!code) return code.error();
       return compiled(*code, CacheHit::none, elapsed());
     }
@@ -224,7 +227,7 @@ class Jit {
             objects.push_back({object_name, std::move(*object)});
           }
         if (complete) {
-          Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(objects));
+          Result<std::shared_ptr<const KernelCode>> code = add_objects(ir, name, width, std::move(objects));
           if (code) {
             std::error_code ignored;  // recently used: the last to be pruned
             for (const std::filesystem::path& file : files)
@@ -244,7 +247,7 @@ class Jit {
     // Another thread may have compiled the same program meanwhile.
     if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
       return compiled(code, CacheHit::none, elapsed());
-    Result<std::shared_ptr<const KernelCode>> code = add_objects(name, width, std::move(*objects));
+    Result<std::shared_ptr<const KernelCode>> code = add_objects(ir, name, width, std::move(*objects));
     if (!code) return code.error();
     return admit(*code, CacheHit::none, elapsed(), evicted);
   }
@@ -407,20 +410,35 @@ class Jit {
     return std::move(*object);
   }
 
-  Result<std::shared_ptr<const KernelCode>> add_objects(const std::string& name, int width, KernelObjects objects) {
+  // Links the kernel's objects, and binds the data they declare (large
+  // data, codegen/emit_kernel.h) to a copy the kernel keeps.
+  Result<std::shared_ptr<const KernelCode>> add_objects(const ShadeIR& ir, const std::string& name, int width,
+                                                        KernelObjects objects) {
     llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
+    std::shared_ptr<const std::vector<float>> data;
+    if (ir.data.size() * sizeof(float) > max_embedded_data_bytes) {
+      data = std::make_shared<const std::vector<float>>(ir.data);
+      const llvm::orc::SymbolMap symbols{
+          {jit_->mangleAndIntern(kernel_data_symbol(name)),
+           {llvm::orc::ExecutorAddr::fromPtr(data->data()), llvm::JITSymbolFlags::Exported}}};
+      if (llvm::Error error = tracker->getJITDylib().define(llvm::orc::absoluteSymbols(symbols), tracker)) {
+        llvm::consumeError(tracker->remove());
+        return failure("JIT: " + error_text(std::move(error)));
+      }
+    }
     for (KernelObject& object : objects)
       if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object.code))) {
         llvm::consumeError(tracker->remove());
         return failure("JIT: " + error_text(std::move(error)));
       }
-    return look_up(name, width, tracker);
+    return look_up(name, width, tracker, std::move(data));
   }
 
   // The kernel's two functions, once its object is in the JIT under
   // `tracker`; a kernel that cannot be found is removed again.
   Result<std::shared_ptr<const KernelCode>> look_up(const std::string& name, int width,
-                                                    const llvm::orc::ResourceTrackerSP& tracker) {
+                                                    const llvm::orc::ResourceTrackerSP& tracker,
+                                                    std::shared_ptr<const std::vector<float>> data) {
     auto missing = [&](llvm::Error error) -> Diagnostic {
       llvm::consumeError(tracker->remove());
       return failure("JIT: " + error_text(std::move(error)));
@@ -431,7 +449,8 @@ class Jit {
     if (!run) return missing(run.takeError());
     const CompiledKernel functions{
         .bind = bind->toPtr<KernelBindFunction>(), .run = run->toPtr<KernelRunFunction>(), .width = width};
-    return std::shared_ptr<const KernelCode>(std::make_shared<KernelCode>(name, tracker, functions, mutex_));
+    return std::shared_ptr<const KernelCode>(
+        std::make_shared<KernelCode>(name, tracker, std::move(data), functions, mutex_));
   }
 
   static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {

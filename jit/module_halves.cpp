@@ -251,16 +251,9 @@ std::optional<llvm::SmallVector<char, 0>> split_off_half(llvm::Module& module, c
   extracted->setLinkage(llvm::GlobalValue::ExternalLinkage);
   // The half's module: the half, the functions it calls and the tables it
   // reads, copied (their addresses fold into its instructions). Large data
-  // (a graph's image or mesh) stays in `module` alone, exported under a
-  // name of the half's, and links to the half.
+  // (a graph's image or mesh) is only declared by the kernel's modules
+  // (codegen/emit_kernel.h), so the half declares it too.
   const llvm::SmallPtrSet<const llvm::GlobalValue*, 16> used = used_by(*extracted);
-  const llvm::DataLayout& layout = module.getDataLayout();
-  int exported = 0;
-  for (llvm::GlobalVariable& global : module.globals())
-    if (used.contains(&global) && layout.getTypeAllocSize(global.getValueType()) > max_copied_data_bytes) {
-      global.setName(half_name + ".data" + std::to_string(exported++));
-      global.setLinkage(llvm::GlobalValue::ExternalLinkage);
-    }
   llvm::ValueToValueMapTy copies;
   std::unique_ptr<llvm::Module> half = llvm::CloneModule(module, copies, [&](const llvm::GlobalValue* value) {
     return value == extracted || (used.contains(value) && value->hasLocalLinkage());

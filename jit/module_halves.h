@@ -39,10 +39,6 @@ namespace shadetree {
 constexpr unsigned min_instructions_to_halve = 1300;
 // A block shorter than this is never cut.
 constexpr unsigned min_block_to_halve = 900;
-// Data the half reads is copied into its module up to this size (noise
-// tables, spline knots); larger data (images, meshes) is linked to, not
-// written and compiled twice.
-constexpr unsigned max_copied_data_bytes = 64 * 1024;
 
 // Moves about half of `module`, if it is large enough, to a function named
 // `half_name`, which `module` then only declares. Returns the bitcode the

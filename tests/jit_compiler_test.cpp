@@ -12,7 +12,9 @@
 
 #include "pipeline/compile_graph.h"
 #include "jit/jit_compiler.h"
+#include "interp/interpreter.h"
 #include "jit/jit_kernel.h"
+#include "support/differential_samples.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
 
@@ -324,6 +326,33 @@ TEST(JitCompiler, HalvedKernelsKeepTheirHalfInTheDiskCache) {
   ASSERT_TRUE(recompiled.ok()) << recompiled.error().to_string();
   EXPECT_EQ(recompiled->cache, CacheHit::none) << "half a kernel is no kernel";
   EXPECT_EQ(objects(), (std::vector<std::string>{name, name + "_half"}));
+  std::filesystem::remove_all(folder);
+}
+
+// A graph's large data (a mesh's distance grid) is not in its kernel's
+// objects: the JIT binds the declared data to the kernel's own copy when
+// it links them, compiled or read from the disk cache, and the kernel
+// computes what the interpreter does.
+TEST(JitCompiler, KernelsOfLargeDataBindItWhenLinked) {
+  const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-data-cache-test";
+  std::filesystem::remove_all(folder);
+  const JitSettings settings{true, folder.string(), false, std::nullopt};
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/mesh_hypertexture.json");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  ASSERT_GT(loaded->ir.data.size() * sizeof(float), max_embedded_data_bytes);
+  Result<std::string> listing = kernel_listing(loaded->ir, 8, Listing::optimized_llvm_ir);
+  ASSERT_TRUE(listing.ok()) << listing.error().to_string();
+  EXPECT_NE(listing->find("@shade_kernel_data = external constant"), std::string::npos);
+  const auto reference = testing::run(*make_interpreted_kernel(loaded->ir), loaded->params);
+  for (CacheHit expected : {CacheHit::none, CacheHit::disk}) {
+    evict_memory_cache();
+    Result<CompiledKernel> compiled = compile_kernel(loaded->ir, 8, settings);
+    ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+    EXPECT_EQ(compiled->cache, expected);
+    Result<std::unique_ptr<Kernel>> kernel = make_jit_kernel(loaded->ir, 8, settings);
+    ASSERT_TRUE(kernel.ok()) << kernel.error().to_string();
+    EXPECT_EQ(testing::run(**kernel, loaded->params), reference) << "cache " << static_cast<int>(expected);
+  }
   std::filesystem::remove_all(folder);
 }
 
