@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "graph/diagnostic.h"
+#include "platform/process_heap.h"
 
 namespace shadetree {
 
@@ -20,6 +21,7 @@ ExitStatus report(const Diagnostic& diagnostic) {
 
 int main(int argc, char** argv) {
   using namespace shadetree;
+  keep_freed_memory_in_the_process();
   CLI::App app{"shadetree: compile and render JSON shade graphs"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "shadetree 0.1 (graph format 1)");
