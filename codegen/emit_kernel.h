@@ -51,9 +51,10 @@ UniformStateLayout uniform_state_layout(const ShadeIR& ir);
 // registers and hardware gathers for the other tables (splines); the same
 // with the noise permutation looked up as bytes (AVX-512 VBMI); or the
 // permutation as bytes and every float table by hardware gathers; or the
-// permutation as bytes, the other noise tables one lane at a time (rows
-// hashed in general registers, as per-lane does) and tables of other
-// sizes by hardware gathers. Spline knots (up to 32 floats) are in
+// permutation as bytes (the lattice's rows hashed by it for all lanes at
+// once, a periodic noise's in general registers as per-lane does), the
+// gradients one lane at a time, and tables of other sizes by hardware
+// gathers. Spline knots (up to 32 floats) are in
 // registers in the last four.
 enum class GatherStrategy {
   hardware,

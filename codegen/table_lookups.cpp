@@ -358,6 +358,15 @@ std::vector<llvm::Value*> lane_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm
 }
 
 // The same rows hashed in vector registers, by the strategy's lookups.
+// With the permutation as bytes in registers and the gradients read lane
+// by lane (bytes and per-lane at 16 lanes), the rows of the lattice are
+// hashed here, a few byte permutes a level for all lanes at once where the
+// lane loop spent about 25 instructions a lane, and read lane by lane as
+// that loop's rows are: on Zen 5, noise 182-187 -> 231-250, turbulence
+// 26.3 -> 30.8 and marble 20 -> 23 M samples/s at one thread
+// (docs/architecture.md). The periodic (apart) rows stay with the loop:
+// hashed here they compiled 5-10 ms slower (looping_turbulence,
+// tileable_stones), past the 50 ms that a gallery graph's compile is held to.
 std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, llvm::Module& module,
                                                   const Lookups256& how, llvm::Value* tables, llvm::Value* cell_at,
                                                   int width, const KnotRowsShape& shape) {
@@ -387,9 +396,21 @@ std::vector<llvm::Value*> vector_hashed_knot_rows(llvm::IRBuilder<>& builder, ll
   }
   llvm::Value* i = index(0, 0);
   llvm::Value* next_i = shape.adjacent ? nullptr : index(0, 1);
+  // Where memory is read lane by lane, each row's slots are stored and
+  // loaded back a lane at a time. Moved out of the vector register instead
+  // (extracts), the kernels ran up to a tenth faster but compiled about
+  // 10 ms slower (stf_multi, ocean, wool, tribble); the store is volatile
+  // so that no pass turns the loads back into such moves.
+  llvm::Value* stored_slots = reads_interleaved(how) ? builder.CreateAlloca(index_type) : nullptr;
   const auto knots = [&](llvm::Value* cell, llvm::Value* hash, int count) {
-    return knot_gradients(builder, module, how, tables, slot_of(builder, cell, hash, width), width, count,
-                          shape.dimensions);
+    llvm::Value* slots = slot_of(builder, cell, hash, width);
+    if (!stored_slots) return knot_gradients(builder, module, how, tables, slots, width, count, shape.dimensions);
+    builder.CreateStore(slots, stored_slots, /*isVolatile=*/true);
+    return interleaved_gradients(builder, tables, width, count, shape.dimensions, [&](int lane) {
+      return builder.CreateAlignedLoad(builder.getInt32Ty(),
+                                       builder.CreateConstInBoundsGEP1_32(builder.getInt32Ty(), stored_slots, lane),
+                                       llvm::Align(4));
+    });
   };
   std::vector<llvm::Value*> gradients;
   for (llvm::Value* hash : hashes) {
@@ -420,7 +441,8 @@ void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int wi
   llvm::Value* tables = &*args++;
   llvm::Value* cell_at = &*args;
   store_vectors(builder,
-                reads_interleaved(how) ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, shape)
+                reads_interleaved(how) && !(how.ints_as_bytes && shape.adjacent)
+                    ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, shape)
                                        : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, shape),
                 out);
 }
