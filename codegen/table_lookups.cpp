@@ -443,7 +443,7 @@ void define_knot_rows_lookup(llvm::Module& module, const Lookups256& how, int wi
   store_vectors(builder,
                 reads_interleaved(how) && !(how.ints_as_bytes && shape.adjacent)
                     ? lane_hashed_knot_rows(builder, module, tables, cell_at, width, shape)
-                                       : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, shape),
+                    : vector_hashed_knot_rows(builder, module, how, tables, cell_at, width, shape),
                 out);
 }
 
