@@ -26,12 +26,15 @@ void add_check_command(CLI::App& app, CommandRunner& run) {
       ExitStatus worst = ExitStatus::ok;
       for (const std::string& file : *files) {
         const GraphFiles files = graph_files(*search_paths);
-        Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, files);
+        // Read once: a second read for the list of faults found a pipe
+        // empty (and waited on it for a writer).
+        const Result<Graph> parsed = load_graph(file);
+        Result<LoadedGraph> loaded = parsed ? compile_graph(*parsed, {}, files) : Result<LoadedGraph>(parsed.error());
         const auto failed = [&](ExitStatus status) {
           if (worst == ExitStatus::ok || status == ExitStatus::invalid_input) worst = status;
         };
         if (!loaded) {
-          for (const Diagnostic& fault : every_fault(load_graph(file), loaded.error(), files)) failed(report(fault));
+          for (const Diagnostic& fault : every_fault(parsed, loaded.error(), files)) failed(report(fault));
           continue;
         }
         RenderRequest request;

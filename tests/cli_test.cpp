@@ -2,6 +2,7 @@
 // no partial outputs, eval agreeing with render, generated docs up to date.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -100,6 +101,22 @@ TEST_F(Cli, CheckReportsEveryFaultOfAGraphAndRenderTheFirst) {
   const CommandResult render = shadetree("render " + graph.string() + " -o " + (directory_ / "two.png").string());
   EXPECT_EQ(render.status, 2);
   EXPECT_EQ(render.err, first);
+}
+
+// A graph read from a pipe is there to be read once: check, listing every
+// fault, once read it a second time and waited for another writer.
+TEST_F(Cli, CheckReadsAGraphOnceFromAPipe) {
+  const fs::path text = write("two.txt", R"({"format": "shadetree-graph", "version": 1, "kind": "texture",
+      "nodes": [{"id": "u", "op": "uv"}, {"id": "n", "op": "noise", "in": {"p": "u"}},
+                {"id": "t", "op": "turbulence", "in": {"p": "u"}}, {"id": "c", "op": "color", "in": {"r": "n", "g": "t"}}],
+      "outputs": {"color": "c"}})");
+  const fs::path pipe = directory_ / "pipe.json";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const CommandResult run = shadetree("check " + pipe.string(),
+                                      "cat " + text.string() + " > " + pipe.string() + " & timeout 60 " SHADETREE_BINARY);
+  EXPECT_EQ(run.status, 2) << "124: still waiting on the pipe";
+  EXPECT_EQ(line_count(run.err), 2) << run.err;
+  EXPECT_NE(run.err.find("node \"t\" input \"p\": expected vec3, got vec2"), std::string::npos) << run.err;
 }
 
 TEST_F(Cli, MissingFilesAndUsageErrorsExitWithTwo) {
