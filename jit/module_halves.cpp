@@ -141,16 +141,6 @@ std::optional<std::size_t> cut_position(llvm::BasicBlock& block, unsigned target
   return best;
 }
 
-// A block cut gives the half this share of the module's instructions. The
-// first part of a 4D turbulence's octave block (the hashing and the
-// lookups) costs the code generator more per instruction than the rest:
-// cut at a half of the module, the fireball's half (1407 instructions)
-// took 27 ms to generate against the kernel's 17 ms (1110), and its cold
-// compile 43-59 ms; at two fifths, 36-55 ms, the same compile ahead in
-// each of four rounds in turn, while looping_turbulence, fire, water_waves
-// and donut_stucco moved within the host's noise (docs/architecture.md).
-constexpr unsigned block_half_share_percent = 40;
-
 // The first part of the module's longest block, cut off as a block of its
 // own, to hold about `target` instructions; nothing if it is too short.
 std::vector<llvm::BasicBlock*> block_part(llvm::Module& module, unsigned target) {
@@ -248,7 +238,7 @@ std::optional<llvm::SmallVector<char, 0>> split_off_half(llvm::Module& module, c
   for (llvm::Function& function : module)
     if (!largest || function.getInstructionCount() > largest->getInstructionCount()) largest = &function;
   std::vector<llvm::BasicBlock*> region = loop_stretch(*largest, total / 2, total);
-  if (region.empty()) region = block_part(module, block_half_share_percent * total / 100);
+  if (region.empty()) region = block_part(module, total / 2);
   if (region.empty()) return std::nullopt;
   llvm::Function& function = *region.front()->getParent();
   recompute_stack_addresses(region);
