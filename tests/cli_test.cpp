@@ -676,6 +676,24 @@ TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   EXPECT_GT(results[1]["jit_sps_1t"].get<double>(), 0.0);
 }
 
+// --compiles N: the median of N cold compiles, between the fastest and
+// the slowest of them; none is a usage error.
+TEST_F(Cli, BenchReportsTheMedianOfItsColdCompiles) {
+  const CommandResult run =
+      shadetree("bench " + gallery + "checker_aa.json --size 16x16 --repetitions 1 --compiles 3 --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto result = nlohmann::json::parse(run.out)[0];
+  const double fastest = result["compile_ms_cold_fastest"].get<double>();
+  const double slowest = result["compile_ms_cold_slowest"].get<double>();
+  const double median = result["compile_ms_cold"].get<double>();
+  EXPECT_GT(fastest, 0.0);
+  EXPECT_LE(fastest, median);
+  EXPECT_LE(median, slowest);
+  const CommandResult none = shadetree("bench " + gallery + "checker_aa.json --size 16x16 --compiles 0");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("--compiles"), std::string::npos) << none.err;
+}
+
 // Quick kernels are never cached, so they have no cached compile time.
 TEST_F(Cli, BenchMeasuresQuickKernels) {
   const CommandResult run = shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --quick");
