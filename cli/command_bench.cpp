@@ -1,8 +1,7 @@
 // shadetree bench FILE...: per graph, nodes before and after optimization,
 // JIT compile time (cold, the median of --compiles, and cached), and
-// interpreter and JIT throughput at
-// one thread and at all threads, as medians of repeated runs after a
-// warm-up. Samples are the texture driver's (a WxH grid over the graph's
+// interpreter and JIT throughput at one thread and at all threads, as
+// medians of repeated runs after a warm-up. Samples are the texture driver's (a WxH grid over the graph's
 // render domain), fed straight to the kernel so that every graph kind can
 // be measured. Graphs of the kinds whose drivers do more than run the
 // kernel (surface, volume) are also rendered by their driver, with the
