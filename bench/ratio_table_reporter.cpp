@@ -2,22 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <ostream>
+
+#include "platform/cpu_model.h"
 
 namespace shadetree {
 namespace {
-
-// Google Benchmark's context gives the clock and caches but not the model.
-std::string cpu_model_name() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);)
-    if (line.rfind("model name", 0) == 0) {
-      const std::size_t colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
-    }
-  return "an unnamed CPU";
-}
 
 void add_once(std::vector<std::string>& names, const std::string& name) {
   if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
@@ -86,6 +76,7 @@ void RatioTableReporter::print_table(std::ostream& out) const {
   };
   const bool medians = std::all_of(measurements_.begin(), measurements_.end(),
                                    [](const auto& entry) { return entry.second.median || !entry.second.error.empty(); });
+  // Google Benchmark's context names the clock and caches, not the model.
   out << "\n" << caption_ << " on " << cpu_model_name() << ", " << (medians ? "medians of the repetitions" : "single runs")
       << ".\nEach cell: " << reference_ << "'s samples per second over the column's, and the column's million samples per "
       << "second.\n";

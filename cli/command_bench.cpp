@@ -26,6 +26,7 @@
 #include "io/graph_files.h"
 #include "jit/jit_kernel.h"
 #include "pipeline/compile_graph.h"
+#include "platform/cpu_model.h"
 #include "render/graph_kinds.h"
 #include "render/texture_driver.h"
 #include "schedule/thread_arena.h"
@@ -54,6 +55,12 @@ const std::map<std::string, GatherStrategy> gather_strategies = {
     {"in-register-bytes", GatherStrategy::in_register_byte_permutes},
     {"bytes-and-gathers", GatherStrategy::byte_permutes_and_gathers},
     {"bytes-and-per-lane", GatherStrategy::byte_permutes_and_per_lane}};
+
+std::string gather_strategy_name(GatherStrategy strategy) {
+  for (const auto& [name, named] : gather_strategies)
+    if (named == strategy) return name;
+  return "unnamed";
+}
 
 struct Samples {
   std::size_t count = 0;
@@ -175,9 +182,17 @@ ExitStatus bench(const BenchArguments& arguments) {
   if (!warm_up || !compile_kernel(warm_up->ir, 0, JitSettings{false, {}, true, std::nullopt}))
     return report(failure("cannot start the JIT for benchmarking"));
   nlohmann::ordered_json results = nlohmann::json::array();
-  if (!arguments.json)
+  // What the figures were measured on and with: lookup strategies and
+  // widths rank differently from one processor to the next.
+  const std::string cpu = cpu_model_name(), jit_cpu = host_cpu_name();
+  const int jit_width = arguments.width > 0 ? arguments.width : host_vector_width();
+  const std::string jit_gathers = arguments.gathers.empty() ? gather_strategy_name(host_gather_strategy()) : arguments.gathers;
+  if (!arguments.json) {
+    std::printf("%s (LLVM: %s); JIT: %d lanes, %s lookups\n", cpu.c_str(), jit_cpu.c_str(), jit_width,
+                jit_gathers.c_str());
     std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
                 "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
+  }
   std::map<GraphKind, DriverRows> driver_rows;
   for (const std::string& file : arguments.files) {
     Result<LoadedGraph> loaded = load_and_compile(file, {}, {}, graph_files());
@@ -237,6 +252,10 @@ ExitStatus bench(const BenchArguments& arguments) {
                          {"interp_sps_mt", interp_mt},
                          {"jit_sps_1t", jit_1t},
                          {"jit_sps_mt", jit_mt},
+                         {"cpu", cpu},
+                         {"jit_cpu", jit_cpu},
+                         {"jit_width", jit_width},
+                         {"jit_gathers", jit_gathers},
                          {"driver", driver}});
     } else {
       char cached_text[32] = "-";

@@ -669,7 +669,8 @@ TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   const auto results = nlohmann::json::parse(run.out);
   ASSERT_EQ(results.size(), 2u);
   for (const char* key : {"graph", "samples", "nodes_before", "nodes_after", "compile_ms_cold", "compile_ms_cached",
-                          "interp_sps_1t", "interp_sps_mt", "jit_sps_1t", "jit_sps_mt"})
+                          "interp_sps_1t", "interp_sps_mt", "jit_sps_1t", "jit_sps_mt", "cpu", "jit_cpu", "jit_width",
+                          "jit_gathers"})
     EXPECT_TRUE(results[0].contains(key)) << key;
   EXPECT_EQ(results[0]["graph"], "checker_aa");
   EXPECT_EQ(results[1]["samples"], 1024);
@@ -704,13 +705,17 @@ TEST_F(Cli, BenchMeasuresQuickKernels) {
   EXPECT_GT(result["jit_sps_1t"].get<double>(), 0.0);
 }
 
-// Kernels of any width are measured; other widths are usage errors.
+// Kernels of any width are measured, and say so; other widths are usage
+// errors.
 TEST_F(Cli, BenchMeasuresTheKernelsOfAGivenWidth) {
   for (const char* width : {"4", "8"}) {
-    const CommandResult run =
-        shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --width " + width);
+    const CommandResult run = shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --width " +
+                                        width + " --gathers per-lane");
     ASSERT_EQ(run.status, 0) << run.err;
-    EXPECT_GT(nlohmann::json::parse(run.out)[0]["jit_sps_1t"].get<double>(), 0.0) << width;
+    const auto result = nlohmann::json::parse(run.out)[0];
+    EXPECT_GT(result["jit_sps_1t"].get<double>(), 0.0) << width;
+    EXPECT_EQ(result["jit_width"], std::stoi(width));
+    EXPECT_EQ(result["jit_gathers"], "per-lane");
   }
   const CommandResult odd = shadetree("bench " + gallery + "marble.json --size 16x16 --width 3");
   EXPECT_EQ(odd.status, 2);
