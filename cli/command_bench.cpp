@@ -183,7 +183,9 @@ ExitStatus bench(const BenchArguments& arguments) {
     return report(failure("cannot start the JIT for benchmarking"));
   nlohmann::ordered_json results = nlohmann::json::array();
   // What the figures were measured on and with: lookup strategies and
-  // widths rank differently from one processor to the next.
+  // widths rank differently from one processor to the next. The lookups
+  // are those asked for; a host without their instructions falls back
+  // (jit/jit_compiler.cpp, effective_gathers).
   const std::string cpu = cpu_model_name(), jit_cpu = host_cpu_name();
   const int jit_width = arguments.width > 0 ? arguments.width : host_vector_width();
   const std::string jit_gathers = arguments.gathers.empty() ? gather_strategy_name(host_gather_strategy()) : arguments.gathers;
