@@ -142,13 +142,35 @@ using LightGrids = std::vector<std::optional<TransmittanceGrid>>;
 struct TileCounts {
   long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, shadow_lookups = 0,
        skipped_samples = 0, kernel_calls = 0, lane_slots = 0;
-  long long gradient_ns = 0;  // in the kernel calls of the gradients (probes or normal kernel)
+  long long kernel_ns = 0;    // in the kernel calls
+  long long gradient_ns = 0;  // of those, in the calls of the gradients (probes or normal kernel)
+  std::array<long long, march_stage_count> stage_ns{};  // the march's own, by MarchStage
 };
 
 // Nanoseconds since `start`.
 long long nanoseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count();
 }
+
+// The thread time of one stage of the march, without the kernel calls
+// made in it (they are the kernel's time), into counts.stage_ns.
+class MarchStageClock {
+ public:
+  MarchStageClock(TileCounts& counts, MarchStage stage)
+      : counts_(counts),
+        stage_(static_cast<std::size_t>(stage)),
+        kernel_ns_before_(counts.kernel_ns),
+        start_(std::chrono::steady_clock::now()) {}
+  ~MarchStageClock() { counts_.stage_ns[stage_] += nanoseconds_since(start_) - (counts_.kernel_ns - kernel_ns_before_); }
+  MarchStageClock(const MarchStageClock&) = delete;
+  MarchStageClock& operator=(const MarchStageClock&) = delete;
+
+ private:
+  TileCounts& counts_;
+  std::size_t stage_;
+  long long kernel_ns_before_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 // A ray from a shaded sample toward a light, through the volume.
 struct ShadowRay {
@@ -204,18 +226,16 @@ struct StepSamples {
 // statistics.
 struct TileScratch {
   TileScratch(std::size_t packet, std::size_t lights, const Kernel& kernel, float step, BoundKernel& bound,
-              BoundKernel* normal_bound, std::atomic<long long>& kernel_ns)
+              BoundKernel* normal_bound)
       : samples(packet, kernel, step),
         probes(2 * packet, kernel, step),
         shadows(packet * std::max<std::size_t>(lights, 1), kernel, step),
         bound(bound),
-        normal_bound(normal_bound),
-        kernel_ns(kernel_ns) {}
+        normal_bound(normal_bound) {}
   Batch samples, probes, shadows;
   StepSamples step;
   BoundKernel& bound;
   BoundKernel* normal_bound;  // of VolumeRenderOptions::normal_kernel, where there is one
-  std::atomic<long long>& kernel_ns;
   TileCounts counts;
 };
 
@@ -252,7 +272,8 @@ class Marcher {
 
   // The tile's pixels, RGB, row after row.
   void render_tile(const Tile& tile, const Camera& camera, BoundKernel& bound, BoundKernel* normal_bound,
-                   std::vector<glm::vec3>& pixels, TileCounts& counts, std::atomic<long long>& kernel_ns) const {
+                   std::vector<glm::vec3>& pixels, TileCounts& counts) const {
+    std::optional<MarchStageClock> setting_up(std::in_place, counts, MarchStage::rays);
     const std::size_t lights = scene_.lights().size();
     pixels.resize(static_cast<std::size_t>(tile.width) * tile.height);
     for (int y = 0; y < tile.height; ++y)
@@ -293,7 +314,8 @@ class Marcher {
     const std::size_t tile_rays = rays.size() + objects.size();
     const std::size_t packet = std::min(
         tile_rays, options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : tile_rays);
-    TileScratch scratch(packet, lights, kernel_, step_, bound, normal_bound, kernel_ns);
+    TileScratch scratch(packet, lights, kernel_, step_, bound, normal_bound);
+    setting_up.reset();
     for (std::size_t first = 0; first < rays.size(); first += packet) {
       const std::size_t last = std::min(rays.size(), first + packet);
       std::vector<MarchingRay*> live;
@@ -321,6 +343,8 @@ class Marcher {
     counts.skipped_samples += marched.skipped_samples;
     counts.kernel_calls += marched.kernel_calls;
     counts.lane_slots += marched.lane_slots;
+    counts.kernel_ns += marched.kernel_ns;
+    for (std::size_t stage = 0; stage < march_stage_count; ++stage) counts.stage_ns[stage] += marched.stage_ns[stage];
   }
 
  private:
@@ -348,12 +372,18 @@ class Marcher {
       point.geometric_normal = glm::dot(sample.hit.world_normal, sample.to_viewer) < 0.0f ? -sample.hit.world_normal
                                                                                           : sample.hit.world_normal;
       point.shading_normal = point.geometric_normal;
-      if (!shadows_) continue;
-      const float offset = 1e-4f * (1.0f + glm::length(point.point));
-      shadow_from(point.point, point.geometric_normal, offset, 0.0f, (k - first) * lights, transmittance, shadow_rays,
-                  scratch.counts);
     }
-    march_shadows(shadow_rays, transmittance, scratch);
+    if (shadows_) {
+      MarchStageClock clock(scratch.counts, MarchStage::shadows);
+      for (std::size_t k = first; k < last; ++k) {
+        const LitPoint& point = points[k - first];
+        const float offset = 1e-4f * (1.0f + glm::length(point.point));
+        shadow_from(point.point, point.geometric_normal, offset, 0.0f, (k - first) * lights, transmittance,
+                    shadow_rays, scratch.counts);
+      }
+      march_shadows(shadow_rays, transmittance, scratch);
+    }
+    MarchStageClock clock(scratch.counts, MarchStage::shading);
     for (std::size_t k = first; k < last; ++k) {
       const ObjectSample& sample = objects[k];
       SurfaceMaterial material;
@@ -508,8 +538,9 @@ class Marcher {
   // The graph's kernel (or `bound`, another of the graph's) on the first
   // `count` samples of `batch`.
   void run(Batch& batch, std::size_t count, TileScratch& scratch, BoundKernel* bound = nullptr) const {
-    StageClock clock(scratch.kernel_ns);
+    const auto start = std::chrono::steady_clock::now();
     (bound ? *bound : scratch.bound).run(batch.inputs.inputs(), batch.outputs.planes(), count);
+    scratch.counts.kernel_ns += nanoseconds_since(start);
     scratch.counts.density_samples += static_cast<long>(count);
     scratch.counts.kernel_calls += 1;
     scratch.counts.lane_slots += static_cast<long>(lane_slots_of(count, options_.lane_width));
@@ -590,6 +621,7 @@ class Marcher {
     const std::size_t lights = scene_.lights().size();
     step.transmittance.assign(live.size() * lights, 1.0f);
     if (!shadows_) return;
+    MarchStageClock clock(scratch.counts, MarchStage::shadows);
     step.shadow_rays.clear();
     for (std::size_t i = 0; i < live.size(); ++i) {
       // A faint sample (its opacity per reference step, times what the ray
@@ -632,9 +664,9 @@ class Marcher {
       points.store(k, step.at[step.soft[k]]);
       views.store(k, live[step.soft[k]]->frame.along);
     }
-    const auto start = std::chrono::steady_clock::now();
+    const long long kernel_ns_before = scratch.counts.kernel_ns;
     run(batch, step.soft.size(), scratch, scratch.normal_bound);
-    scratch.counts.gradient_ns += nanoseconds_since(start);
+    scratch.counts.gradient_ns += scratch.counts.kernel_ns - kernel_ns_before;
     scratch.counts.gradient_samples += static_cast<long>(step.soft.size());
     take_normals(batch, options_.normal_kernel->outputs(), [](std::size_t k) { return k; }, step);
   }
@@ -654,9 +686,9 @@ class Marcher {
       views.store(2 * k, ray.frame.along);
       views.store(2 * k + 1, ray.frame.along);
     }
-    const auto start = std::chrono::steady_clock::now();
+    const long long kernel_ns_before = scratch.counts.kernel_ns;
     run(probes, 2 * step.soft.size(), scratch);
-    scratch.counts.gradient_ns += nanoseconds_since(start);
+    scratch.counts.gradient_ns += scratch.counts.kernel_ns - kernel_ns_before;
     scratch.counts.gradient_samples += static_cast<long>(2 * step.soft.size());
     const float* probed = probes.outputs.plane(layout_.plane(OutputId::density));
     for (std::size_t k = 0; k < step.soft.size(); ++k) {
@@ -676,6 +708,7 @@ class Marcher {
     Batch& samples = scratch.samples;
     StepSamples& step = scratch.step;
     const std::size_t count = live.size();
+    std::optional<MarchStageClock> stepping(std::in_place, scratch.counts, MarchStage::stepping);
     step.t.resize(count);
     step.at.resize(count);
     // The normal faces the viewer where the density has none (below).
@@ -702,6 +735,7 @@ class Marcher {
     step.opacity.resize(count);
     const float* opacities = opacity_plane(layout_, samples);
     for (std::size_t i = 0; i < count; ++i) step.opacity[i] = unit_opacity(opacities[i]);
+    stepping.reset();
 
     // The outward normal where 0 < density < 1 (the samples lit by their
     // normal). Only a sample that adds to the ray is lit, so only its
@@ -709,6 +743,7 @@ class Marcher {
     // opacity (a step of its density) is 0 through most of the soft shell,
     // where probing cost stf_bumps 38% of its samples.
     if (needs_gradients()) {
+      MarchStageClock clock(scratch.counts, MarchStage::normals);
       step.soft.clear();
       for (std::size_t i = 0; i < count; ++i)
         if (step.density[i] > 0.0f && step.density[i] < 1.0f && (refracts_ || step.opacity[i] > 0.0f) &&
@@ -723,6 +758,7 @@ class Marcher {
     }
     light_transmittance(live, scratch);
 
+    MarchStageClock shading(scratch.counts, MarchStage::shading);
     const float* colors[3] = {nullptr, nullptr, nullptr};
     if (layout_.provides(OutputId::color))
       for (int c = 0; c < 3; ++c) colors[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
@@ -1071,6 +1107,9 @@ class VolumeFrames : public FrameRenderer {
                       {"kernel_s", stats.kernel_seconds},
                       {"gradient_s", stats.gradient_seconds},
                       {"march_s", stats.march_seconds}};
+    for (std::size_t stage = 0; stage < march_stage_count; ++stage)
+      report.figures.emplace_back(std::string("march_") + march_stage_names[stage] + "_s",
+                                  stats.march_stage_seconds[stage]);
     char text[512];
     int length = std::snprintf(text, sizeof text,
                                "%dx%d, %ld rays, %ld density samples (%ld for gradients %s in %.3f s, %ld for "
@@ -1102,6 +1141,14 @@ class VolumeFrames : public FrameRenderer {
                                            : 0.0,
                   100.0 * stats.lane_utilisation(), options.lane_width, stats.march_seconds);
     report.details = text;
+    std::string stages;
+    for (std::size_t stage = 0; stage < march_stage_count; ++stage) {
+      if (stats.march_stage_seconds[stage] <= 0.0) continue;  // a stage this volume does not have
+      std::snprintf(text, sizeof text, "%s%s %.3f", stages.empty() ? " (" : ", ", march_stage_names[stage],
+                    stats.march_stage_seconds[stage]);
+      stages += text;
+    }
+    if (!stages.empty()) report.details += stages + ")";
     return image;
   }
 
@@ -1161,6 +1208,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   if (options.normal_kernel) normal_bindings.emplace(*options.normal_kernel, params.data(), volume_uniforms(view.frame, step));
   std::atomic<long long> tile_ns{0}, kernel_ns{0}, grid_kernel_ns{0};
   std::atomic<long long> gradient_ns{0};
+  std::array<std::atomic<long long>, march_stage_count> stage_ns{};
   std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, shadow_lookups{0},
       skipped_samples{0}, kernel_calls{0}, lane_slots{0};
 
@@ -1202,7 +1250,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
         std::vector<glm::vec3> pixels;
         TileCounts counts;
         marcher.render_tile(tile, camera, bindings.local(), normal_bindings ? &normal_bindings->local() : nullptr,
-                            pixels, counts, kernel_ns);
+                            pixels, counts);
         for (int y = 0; y < tile.height; ++y)
           for (int x = 0; x < tile.width; ++x) {
             float* pixel =
@@ -1212,6 +1260,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
           }
         if (options.tile_done) options.tile_done(image, tile);
         rays += counts.rays;
+        kernel_ns += counts.kernel_ns;
+        for (std::size_t stage = 0; stage < march_stage_count; ++stage) stage_ns[stage] += counts.stage_ns[stage];
         density_samples += counts.density_samples;
         gradient_samples += counts.gradient_samples;
         gradient_ns += counts.gradient_ns;
@@ -1228,6 +1278,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   if (stats) {
     stats->kernel_seconds = seconds(kernel_ns) + seconds(grid_kernel_ns);
     stats->march_seconds = seconds(tile_ns) - seconds(kernel_ns);
+    for (std::size_t stage = 0; stage < march_stage_count; ++stage)
+      stats->march_stage_seconds[stage] = seconds(stage_ns[stage]);
     stats->rays = rays;
     stats->density_samples = density_samples;
     stats->gradient_samples = gradient_samples;

@@ -12,7 +12,9 @@
 // so the image is the same for any packet size and thread count.
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -73,8 +75,22 @@ enum class EmptySpaceVerdict {
 
 // Where the time went (seconds of one core, summed over threads) and how
 // full the kernel calls were.
+// The stages of the march, whose thread time (without the kernel calls
+// made in them) the render line breaks the march's into.
+enum class MarchStage {
+  rays,      // a tile's camera rays set up, clipped to the bounds and to the objects
+  stepping,  // samples placed along the rays (empty space skipped) and their opacities read
+  normals,   // the density's gradient at the samples lit by it
+  shadows,   // what reaches each lit sample of each light: grid lookups and shadow rays
+  shading,   // lighting and front-to-back compositing
+};
+inline constexpr std::size_t march_stage_count = 5;
+inline constexpr const char* march_stage_names[march_stage_count] = {"rays", "stepping", "normals", "shadows",
+                                                                     "shading"};
+
 struct VolumeRenderStats {
   double march_seconds = 0;   // rays, packing, gradients, shading, compositing
+  std::array<double, march_stage_count> march_stage_seconds{};  // of those, by MarchStage
   double kernel_seconds = 0;  // the graph
   long rays = 0;              // that met the volume
   long density_samples = 0;   // graph evaluations: march samples and gradient probes

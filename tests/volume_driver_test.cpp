@@ -208,6 +208,32 @@ TEST(VolumeDriver, ShadowsOnlyDarken) {
   EXPECT_EQ(render(*kernel, loaded, desc, unit_box(0.01f), 40).pixels, plain.pixels);
 }
 
+// The march's thread time is broken into its stages, without the kernel
+// calls made in them: each stage the render has takes time, one it has
+// not (an unlit volume's normals and shadows) takes none, and together
+// they are within the march's time.
+TEST(VolumeDriver, TheMarchsStagesAreWithinItsTime) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "thin", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  for (Lighting lighting : {Lighting::none, Lighting::lit}) {
+    VolumeRenderStats stats;
+    render(*kernel, loaded, looking_down_z(lighting), unit_box(0.02f), 24, {}, &stats);
+    const auto stage = [&](MarchStage s) { return stats.march_stage_seconds[static_cast<std::size_t>(s)]; };
+    double total = 0.0;
+    for (double seconds : stats.march_stage_seconds) {
+      EXPECT_GE(seconds, 0.0);
+      total += seconds;
+    }
+    EXPECT_LE(total, stats.march_seconds + 1e-9);
+    EXPECT_GT(stage(MarchStage::rays), 0.0);
+    EXPECT_GT(stage(MarchStage::stepping), 0.0);
+    EXPECT_GT(stage(MarchStage::shading), 0.0);
+    const bool lit = lighting == Lighting::lit;
+    EXPECT_EQ(stage(MarchStage::normals) > 0.0, lit);
+    EXPECT_EQ(stage(MarchStage::shadows) > 0.0, lit);
+  }
+}
+
 // Shadow rays composite with the same per-reference-step opacity as the
 // march, so a coarser shadow step (a draft's) moves the shadows little
 // while it takes proportionally fewer samples.
