@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <string>
 #include <tuple>
 
 #include <CLI/CLI.hpp>
@@ -152,22 +153,27 @@ Status bench_driver(const LoadedGraph& loaded, const TextureView& view, const st
       const double seconds = report.seconds;
       const double kernel_sps = static_cast<double>(report.kernel_samples) / report.kernel_seconds;
       nlohmann::ordered_json result = {{"backend", backend.name}, {"threads", threads}};
-      char row[512];
-      int length = std::snprintf(row, sizeof row, "%-16s %-7s %7s", loaded.graph->name.c_str(), backend.name,
-                                 threads == 1 ? "1" : "all");
+      // A row as long as the driver has figures: a cell at a time.
+      std::string row = loaded.graph->name;
+      if (row.size() < 16) row.resize(16, ' ');
+      char cell[64];
+      std::snprintf(cell, sizeof cell, " %-7s %7s", backend.name, threads == 1 ? "1" : "all");
+      row += cell;
       table.names.clear();
       for (const auto& [name, value] : report.figures) {
         result[name] = value;
         table.names.push_back(name);
-        length += std::snprintf(row + length, sizeof row - length, " %16.6g", value);
+        std::snprintf(cell, sizeof cell, " %16.6g", value);
+        row += cell;
       }
       result["total_s"] = seconds;
       result["kernel_sps"] = kernel_sps;
       result["kernel_vs_texture_samples"] = kernel_sps / backend.kernel_sps;
-      std::snprintf(row + length, sizeof row - length, " %9.3f %9.2fM %8.2fx", seconds, kernel_sps / 1e6,
+      std::snprintf(cell, sizeof cell, " %9.3f %9.2fM %8.2fx", seconds, kernel_sps / 1e6,
                     kernel_sps / backend.kernel_sps);
+      row += cell;
       results.push_back(result);
-      table.rows.push_back(row);
+      table.rows.push_back(std::move(row));
     }
   return success();
 }

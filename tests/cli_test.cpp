@@ -695,6 +695,19 @@ TEST_F(Cli, BenchReportsTheMedianOfItsColdCompiles) {
   EXPECT_NE(none.err.find("--compiles"), std::string::npos) << none.err;
 }
 
+// A driver's table row is as long as its graph's name: a name longer
+// than the row's fixed buffer once wrote past it (a crash).
+TEST_F(Cli, BenchTablesAGraphOfAnyNameLength) {
+  std::ifstream gallery_file(gallery + "noisy_sphere.json");
+  nlohmann::json graph = nlohmann::json::parse(gallery_file);
+  const std::string name(3000, 'n');
+  graph["name"] = name;
+  const fs::path file = write("long_name.json", graph.dump());
+  const CommandResult run = shadetree("bench " + file.string() + " --size 8x8 --repetitions 1");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find(name + " jit"), std::string::npos) << "the volume driver's row names the graph whole";
+}
+
 // Quick kernels are never cached, so they have no cached compile time.
 TEST_F(Cli, BenchMeasuresQuickKernels) {
   const CommandResult run = shadetree("bench " + gallery + "marble.json --size 16x16 --repetitions 1 --json --quick");
