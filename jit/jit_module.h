@@ -1,7 +1,8 @@
 // The JIT lives in a loadable module, libshadetree_jit.so (codegen/ and
-// jit/ with LLVM): linking libLLVM costs every process 15 ms at start-up,
-// which commands that compile nothing (check, nodes, schema) and farms
-// running thousands of short tasks should not pay. The module hands out
+// jit/ with the parts of LLVM they use, linked in statically): loading it
+// costs a process about 25 ms, which commands that compile nothing (check,
+// nodes, schema) and farms running thousands of short tasks should not
+// pay. The module hands out
 // one table of the JIT's functions; jit/jit_calls.cpp loads it on the
 // first call and forwards jit_compiler.h's and host_target.h's functions
 // to it. Both sides are built from the same sources in one build, so the
