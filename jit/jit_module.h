@@ -2,12 +2,11 @@
 // jit/ with the parts of LLVM they use, linked in statically): loading it
 // costs a process about 25 ms, which commands that compile nothing (check,
 // nodes, schema) and farms running thousands of short tasks should not
-// pay. The module hands out
-// one table of the JIT's functions; jit/jit_calls.cpp loads it on the
-// first call and forwards jit_compiler.h's and host_target.h's functions
-// to it. Both sides are built from the same sources in one build, so the
-// table passes C++ types; the version guards against a module left from
-// another build.
+// pay. The module hands out one table of the JIT's functions;
+// jit/jit_calls.cpp loads it on the first call and forwards
+// jit_compiler.h's and host_target.h's functions to it. Both sides are
+// built from the same sources in one build, so the table passes C++
+// types; the version guards against a module left from another build.
 #pragma once
 
 #include <optional>

@@ -15,6 +15,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -73,10 +74,8 @@ enum class EmptySpaceVerdict {
   not_worth_bounding,  // bounding it finely would cost more than the samples it saves
 };
 
-// Where the time went (seconds of one core, summed over threads) and how
-// full the kernel calls were.
 // The stages of the march, whose thread time (without the kernel calls
-// made in them) the render line breaks the march's into.
+// made in them) the render line breaks the march's into; named in order.
 enum class MarchStage {
   rays,      // a tile's camera rays set up, clipped to the bounds and to the objects
   stepping,  // samples placed along the rays (empty space skipped) and their opacities read
@@ -84,10 +83,11 @@ enum class MarchStage {
   shadows,   // what reaches each lit sample of each light: grid lookups and shadow rays
   shading,   // lighting and front-to-back compositing
 };
-inline constexpr std::size_t march_stage_count = 5;
-inline constexpr const char* march_stage_names[march_stage_count] = {"rays", "stepping", "normals", "shadows",
-                                                                     "shading"};
+inline constexpr const char* march_stage_names[] = {"rays", "stepping", "normals", "shadows", "shading"};
+inline constexpr std::size_t march_stage_count = std::size(march_stage_names);
 
+// Where the time went (seconds of one core, summed over threads) and how
+// full the kernel calls were.
 struct VolumeRenderStats {
   double march_seconds = 0;   // rays, packing, gradients, shading, compositing
   std::array<double, march_stage_count> march_stage_seconds{};  // of those, by MarchStage
