@@ -175,6 +175,56 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
   return gradients;
 }
 
+// The gradient components of `pairs` ([lane]: a lane's two adjacent
+// knots, (x, y, z, w) twice, as one 32-byte load reads them), at 8 or 16
+// lanes: lanes j and j + 8 are put side by side (at 8 lanes, lane j
+// alone), so that each 128-bit quarter holds one knot of one lane; four
+// such registers are transposed within each quarter, as transposed_gradients
+// transposes them, and each knot's lanes are then taken from the quarters
+// of the two transposes. A knot per 16-byte load and lane took twice the
+// loads and a third more shuffles. Returns x at both knots, then y, then
+// z, then (with `components` 4) w.
+std::vector<llvm::Value*> transposed_knot_pairs(llvm::IRBuilder<>& builder, const std::vector<llvm::Value*>& pairs,
+                                                int width, int components) {
+  std::vector<llvm::Value*> registers;
+  for (int j = 0; j < 8; ++j) {
+    llvm::Value* lane = pairs[static_cast<std::size_t>(j)];
+    if (width == 16) {
+      std::vector<int> both(16);
+      for (int e = 0; e < 16; ++e) both[static_cast<std::size_t>(e)] = e;
+      lane = builder.CreateShuffleVector(lane, pairs[static_cast<std::size_t>(j + 8)], both);
+    }
+    registers.push_back(lane);
+  }
+  // Registers first .. first + 3 transposed within each quarter: x, y, z, w.
+  const auto transposed = [&](int first) {
+    const auto r = [&](int k) { return registers[static_cast<std::size_t>(first + k)]; };
+    llvm::Value* xy01 = builder.CreateShuffleVector(r(0), r(1), within_each_quad(width, {0, 4, 1, 5}));
+    llvm::Value* xy23 = builder.CreateShuffleVector(r(2), r(3), within_each_quad(width, {0, 4, 1, 5}));
+    llvm::Value* zw01 = builder.CreateShuffleVector(r(0), r(1), within_each_quad(width, {2, 6, 3, 7}));
+    llvm::Value* zw23 = builder.CreateShuffleVector(r(2), r(3), within_each_quad(width, {2, 6, 3, 7}));
+    std::array<llvm::Value*, 4> axes{
+        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5})),
+        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7})),
+        builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {0, 1, 4, 5})), nullptr};
+    if (components == 4) axes[3] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {2, 3, 6, 7}));
+    return axes;
+  };
+  const std::array<llvm::Value*, 4> low = transposed(0), high = transposed(4);  // lanes 0-3 (8-11), 4-7 (12-15)
+  std::vector<llvm::Value*> gradients;
+  for (int axis = 0; axis < components; ++axis)
+    for (int knot = 0; knot < 2; ++knot) {
+      // Lanes 4 q to 4 q + 3 are quarter 2 (q / 2) + knot of the low
+      // transpose (q even) or of the high one (q odd).
+      std::vector<int> mask;
+      for (int q = 0; q < width / 4; ++q)
+        for (int e = 0; e < 4; ++e) mask.push_back((q % 2) * width + ((q / 2) * 2 + knot) * 4 + e);
+      gradients.push_back(builder.CreateShuffleVector(low[static_cast<std::size_t>(axis)],
+                                                      high[static_cast<std::size_t>(axis)], mask));
+    }
+  return gradients;
+}
+
 // Whether gradients are read from the interleaved table: where memory is
 // read lane by lane, one load a lane gives a knot's three components.
 bool reads_interleaved(const Lookups256& how) {
@@ -200,6 +250,17 @@ template <class SlotOfLane>
 std::vector<llvm::Value*> interleaved_gradients(llvm::IRBuilder<>& builder, llvm::Value* tables, int width, int knots,
                                                 int components, SlotOfLane slot_of_lane) {
   llvm::Value* interleaved = noise_table(builder, tables, offsetof(NoiseTables, hashed_gradient_xyzw));
+  if (knots == 2 && width >= 8) {
+    auto* quad = llvm::FixedVectorType::get(builder.getFloatTy(), 4);
+    auto* two_quads = llvm::FixedVectorType::get(builder.getFloatTy(), 8);
+    std::vector<llvm::Value*> pairs;  // [lane]
+    for (int lane = 0; lane < width; ++lane) {
+      llvm::Value* slot = builder.CreateZExt(slot_of_lane(lane), builder.getInt64Ty());
+      pairs.push_back(builder.CreateAlignedLoad(two_quads, builder.CreateInBoundsGEP(quad, interleaved, slot),
+                                                llvm::Align(16)));
+    }
+    return transposed_knot_pairs(builder, pairs, width, components);
+  }
   std::vector<std::vector<llvm::Value*>> entries(static_cast<std::size_t>(knots));  // [knot][lane]
   for (int lane = 0; lane < width; ++lane) {
     llvm::Value* slot = builder.CreateZExt(slot_of_lane(lane), builder.getInt64Ty());

@@ -305,7 +305,7 @@ TEST(JitCompiler, HalvedKernelsKeepTheirHalfInTheDiskCache) {
   const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-halves-cache-test";
   std::filesystem::remove_all(folder);
   const JitSettings settings{true, folder.string(), false, GatherStrategy::per_lane};
-  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/water_waves.json");
+  Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/eroded_cube.json");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   auto objects = [&] { return cached_objects(folder); };
   const std::string name = kernel_identity(loaded->ir, 8, settings);
