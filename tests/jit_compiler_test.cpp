@@ -308,20 +308,20 @@ TEST(JitCompiler, HalvedKernelsKeepTheirHalfInTheDiskCache) {
   Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/eroded_cube.json");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   auto objects = [&] { return cached_objects(folder); };
-  const std::string name = kernel_identity(loaded->ir, 8, settings);
+  const std::string name = kernel_identity(loaded->ir, 16, settings);
   evict_memory_cache();  // compiled by a test before
-  ASSERT_TRUE(compile_kernel(loaded->ir, 8, settings).ok());
+  ASSERT_TRUE(compile_kernel(loaded->ir, 16, settings).ok());
   EXPECT_EQ(objects(), (std::vector<std::string>{name, name + "_half"}));
   evict_memory_cache();
   {
-    Result<CompiledKernel> reloaded = compile_kernel(loaded->ir, 8, settings);
+    Result<CompiledKernel> reloaded = compile_kernel(loaded->ir, 16, settings);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error().to_string();
     EXPECT_EQ(reloaded->cache, CacheHit::disk);
   }
   std::filesystem::remove(folder / (name + "_half.o"));
   evict_memory_cache();
   ::testing::internal::CaptureStderr();
-  Result<CompiledKernel> recompiled = compile_kernel(loaded->ir, 8, settings);
+  Result<CompiledKernel> recompiled = compile_kernel(loaded->ir, 16, settings);
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   ASSERT_TRUE(recompiled.ok()) << recompiled.error().to_string();
   EXPECT_EQ(recompiled->cache, CacheHit::none) << "half a kernel is no kernel";
