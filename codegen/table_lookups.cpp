@@ -129,12 +129,37 @@ std::vector<llvm::Value*> interleaved_entries(llvm::IRBuilder<>& builder, llvm::
   return entries;
 }
 
+// `first` and `second` side by side, one vector twice as long.
+llvm::Value* concatenated(llvm::IRBuilder<>& builder, llvm::Value* first, llvm::Value* second) {
+  const int count = 2 * static_cast<int>(llvm::cast<llvm::FixedVectorType>(first->getType())->getNumElements());
+  std::vector<int> all(static_cast<std::size_t>(count));
+  for (int e = 0; e < count; ++e) all[static_cast<std::size_t>(e)] = e;
+  return builder.CreateShuffleVector(first, second, all);
+}
+
+// Four registers of (x, y, z, w) quarters transposed within each quarter,
+// as the four-by-four transpose of SSE code does: x, y, z, and with
+// `components` 4 w (else null), each quarter holding that component of the
+// four registers' same quarter.
+std::array<llvm::Value*, 4> transposed_quarters(llvm::IRBuilder<>& builder, const std::array<llvm::Value*, 4>& rows,
+                                                int width, int components) {
+  llvm::Value* xy01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {0, 4, 1, 5}));
+  llvm::Value* xy23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {0, 4, 1, 5}));
+  llvm::Value* zw01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
+  llvm::Value* zw23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
+  std::array<llvm::Value*, 4> axes{builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5})),
+                                   builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7})),
+                                   builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {0, 1, 4, 5})),
+                                   nullptr};
+  if (components == 4) axes[3] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {2, 3, 6, 7}));
+  return axes;
+}
+
 // The gradient components of `entries` ([knot][lane]: a lane's (x, y, z,
 // w), as interleaved_entries reads them): lanes l, l + 4, l + 8, ... are
 // put side by side (one register, a 128-bit quarter each) and four such
-// registers transposed within each quarter, as the four-by-four transpose
-// of SSE code does. Returns x at each knot, then y, then z, then (with
-// `components` 4, for 4D noise) w.
+// registers transposed within each quarter. Returns x at each knot, then
+// y, then z, then (with `components` 4, for 4D noise) w.
 std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
                                                const std::vector<std::vector<llvm::Value*>>& entries, int width,
                                                int components) {
@@ -142,12 +167,7 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
   auto concatenate = [&](std::vector<llvm::Value*> parts) {
     while (parts.size() > 1) {
       std::vector<llvm::Value*> joined;
-      for (std::size_t i = 0; i < parts.size(); i += 2) {
-        const int count = 2 * static_cast<int>(llvm::cast<llvm::FixedVectorType>(parts[i]->getType())->getNumElements());
-        std::vector<int> all(static_cast<std::size_t>(count));
-        for (int e = 0; e < count; ++e) all[static_cast<std::size_t>(e)] = e;
-        joined.push_back(builder.CreateShuffleVector(parts[i], parts[i + 1], all));
-      }
+      for (std::size_t i = 0; i < parts.size(); i += 2) joined.push_back(concatenated(builder, parts[i], parts[i + 1]));
       parts = std::move(joined);
     }
     return parts[0];
@@ -161,16 +181,9 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
         parts.push_back(entries[static_cast<std::size_t>(knot)][static_cast<std::size_t>(lane)]);
       rows[static_cast<std::size_t>(k)] = concatenate(parts);
     }
-    llvm::Value* xy01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {0, 4, 1, 5}));
-    llvm::Value* xy23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {0, 4, 1, 5}));
-    llvm::Value* zw01 = builder.CreateShuffleVector(rows[0], rows[1], within_each_quad(width, {2, 6, 3, 7}));
-    llvm::Value* zw23 = builder.CreateShuffleVector(rows[2], rows[3], within_each_quad(width, {2, 6, 3, 7}));
-    const auto at = [&](int axis) { return static_cast<std::size_t>(axis * knots + knot); };
-    gradients[at(0)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5}));
-    gradients[at(1)] = builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7}));
-    gradients[at(2)] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {0, 1, 4, 5}));
-    if (components == 4)
-      gradients[at(3)] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {2, 3, 6, 7}));
+    const std::array<llvm::Value*, 4> axes = transposed_quarters(builder, rows, width, components);
+    for (int axis = 0; axis < components; ++axis)
+      gradients[static_cast<std::size_t>(axis * knots + knot)] = axes[static_cast<std::size_t>(axis)];
   }
   return gradients;
 }
@@ -179,36 +192,20 @@ std::vector<llvm::Value*> transposed_gradients(llvm::IRBuilder<>& builder,
 // knots, (x, y, z, w) twice, as one 32-byte load reads them), at 8 or 16
 // lanes: lanes j and j + 8 are put side by side (at 8 lanes, lane j
 // alone), so that each 128-bit quarter holds one knot of one lane; four
-// such registers are transposed within each quarter, as transposed_gradients
-// transposes them, and each knot's lanes are then taken from the quarters
-// of the two transposes. A knot per 16-byte load and lane took twice the
-// loads and a third more shuffles. Returns x at both knots, then y, then
-// z, then (with `components` 4) w.
+// such registers are transposed within each quarter, and each knot's
+// lanes are then taken from the quarters of the two transposes. A knot
+// per 16-byte load and lane took twice the loads and a third more
+// shuffles. Returns x at both knots, then y, then z, then (with
+// `components` 4) w.
 std::vector<llvm::Value*> transposed_knot_pairs(llvm::IRBuilder<>& builder, const std::vector<llvm::Value*>& pairs,
                                                 int width, int components) {
-  std::vector<llvm::Value*> registers;
-  for (int j = 0; j < 8; ++j) {
-    llvm::Value* lane = pairs[static_cast<std::size_t>(j)];
-    if (width == 16) {
-      std::vector<int> both(16);
-      for (int e = 0; e < 16; ++e) both[static_cast<std::size_t>(e)] = e;
-      lane = builder.CreateShuffleVector(lane, pairs[static_cast<std::size_t>(j + 8)], both);
-    }
-    registers.push_back(lane);
-  }
-  // Registers first .. first + 3 transposed within each quarter: x, y, z, w.
-  const auto transposed = [&](int first) {
-    const auto r = [&](int k) { return registers[static_cast<std::size_t>(first + k)]; };
-    llvm::Value* xy01 = builder.CreateShuffleVector(r(0), r(1), within_each_quad(width, {0, 4, 1, 5}));
-    llvm::Value* xy23 = builder.CreateShuffleVector(r(2), r(3), within_each_quad(width, {0, 4, 1, 5}));
-    llvm::Value* zw01 = builder.CreateShuffleVector(r(0), r(1), within_each_quad(width, {2, 6, 3, 7}));
-    llvm::Value* zw23 = builder.CreateShuffleVector(r(2), r(3), within_each_quad(width, {2, 6, 3, 7}));
-    std::array<llvm::Value*, 4> axes{
-        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {0, 1, 4, 5})),
-        builder.CreateShuffleVector(xy01, xy23, within_each_quad(width, {2, 3, 6, 7})),
-        builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {0, 1, 4, 5})), nullptr};
-    if (components == 4) axes[3] = builder.CreateShuffleVector(zw01, zw23, within_each_quad(width, {2, 3, 6, 7}));
-    return axes;
+  std::array<llvm::Value*, 8> registers;  // lane j, and lane j + 8 beside it at 16 lanes
+  for (std::size_t j = 0; j < registers.size(); ++j)
+    registers[j] = width == 16 ? concatenated(builder, pairs[j], pairs[j + 8]) : pairs[j];
+  const auto transposed = [&](std::size_t first) {
+    return transposed_quarters(
+        builder, {registers[first], registers[first + 1], registers[first + 2], registers[first + 3]}, width,
+        components);
   };
   const std::array<llvm::Value*, 4> low = transposed(0), high = transposed(4);  // lanes 0-3 (8-11), 4-7 (12-15)
   std::vector<llvm::Value*> gradients;

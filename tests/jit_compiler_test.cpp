@@ -305,23 +305,24 @@ TEST(JitCompiler, HalvedKernelsKeepTheirHalfInTheDiskCache) {
   const auto folder = std::filesystem::temp_directory_path() / "shadetree-jit-halves-cache-test";
   std::filesystem::remove_all(folder);
   const JitSettings settings{true, folder.string(), false, GatherStrategy::per_lane};
+  constexpr int width = 16;  // where eroded_cube's module is well past the size that halves it
   Result<LoadedGraph> loaded = testing::load_gallery_graph(SHADETREE_SOURCE_DIR "/graphs/eroded_cube.json");
   ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
   auto objects = [&] { return cached_objects(folder); };
-  const std::string name = kernel_identity(loaded->ir, 16, settings);
+  const std::string name = kernel_identity(loaded->ir, width, settings);
   evict_memory_cache();  // compiled by a test before
-  ASSERT_TRUE(compile_kernel(loaded->ir, 16, settings).ok());
+  ASSERT_TRUE(compile_kernel(loaded->ir, width, settings).ok());
   EXPECT_EQ(objects(), (std::vector<std::string>{name, name + "_half"}));
   evict_memory_cache();
   {
-    Result<CompiledKernel> reloaded = compile_kernel(loaded->ir, 16, settings);
+    Result<CompiledKernel> reloaded = compile_kernel(loaded->ir, width, settings);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error().to_string();
     EXPECT_EQ(reloaded->cache, CacheHit::disk);
   }
   std::filesystem::remove(folder / (name + "_half.o"));
   evict_memory_cache();
   ::testing::internal::CaptureStderr();
-  Result<CompiledKernel> recompiled = compile_kernel(loaded->ir, 16, settings);
+  Result<CompiledKernel> recompiled = compile_kernel(loaded->ir, width, settings);
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   ASSERT_TRUE(recompiled.ok()) << recompiled.error().to_string();
   EXPECT_EQ(recompiled->cache, CacheHit::none) << "half a kernel is no kernel";
