@@ -129,7 +129,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // direction can move a sample by far less than that.
   const float margin = 1e-3f * std::min({cell_size_.x, cell_size_.y, cell_size_.z});
   const float start = t;
-  glm::vec3 point = origin + t * direction;
+  const glm::vec3 point = origin + t * direction;
   if (!inside(point)) return {t, t};  // outside the bounds nothing is known
   glm::ivec3 cell = cell_of(point);
   // A 3D DDA from cell to cell (Amanatides & Woo 1987), over whole bricks
@@ -141,16 +141,33 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // Multiplied by, where a cell's faces are met: a division per axis and
   // cell was most of the walk.
   const glm::vec3 inverse = 1.0f / direction;
+  // Where the ray meets the current cell's far face across each axis: a
+  // step to the next cell moves one of them, so only that one is computed
+  // again (the same product as exit_of's, so the same floats).
+  const auto far_face = [&](int axis) {
+    if (std::isinf(inverse[axis])) return std::numeric_limits<float>::infinity();
+    const int face = cell[axis] + (inverse[axis] > 0.0f ? 1 : 0);
+    return (lo_[axis] + static_cast<float>(face) * cell_size_[axis] - origin[axis]) * inverse[axis];
+  };
+  glm::vec3 faces(far_face(0), far_face(1), far_face(2));
+  // The first of them, the lowest axis where two meet, as exit_of.
+  const auto leaving = [&] {
+    Exit exit{faces.x, 0};
+    if (faces.y < exit.t) exit = {faces.y, 1};
+    if (faces.z < exit.t) exit = {faces.z, 2};
+    return exit;
+  };
   if (cell_occupied(cell)) {
     // The run of occupied cells the ray is in: it need not ask again
     // before it leaves the run (a hard surface's shell is some cells thick).
-    Exit leaves = exit_of(cell, 1, origin, inverse);
+    Exit leaves = leaving();
     for (int run = 1; run < max_occupied_run && leaves.t < end; ++run) {
       glm::ivec3 next = cell;
       next[leaves.axis] += step[leaves.axis];
       if (next[leaves.axis] < 0 || next[leaves.axis] >= cells_per_side || !cell_occupied(next)) break;
       cell = next;
-      leaves = exit_of(cell, 1, origin, inverse);
+      faces[leaves.axis] = far_face(leaves.axis);
+      leaves = leaving();
     }
     return {t, leaves.t - margin};
   }
@@ -159,21 +176,25 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
     const glm::ivec3 brick = cell / cells_per_brick_side;
     const bool brick_empty = bricks_[brick_index(brick)] == 0;
-    const glm::ivec3 box_first = brick_empty ? brick * cells_per_brick_side : cell;
-    const int box_cells = brick_empty ? cells_per_brick_side : 1;
-    const auto [exit, axis] = exit_of(box_first, box_cells, origin, inverse);
+    const glm::ivec3 box_first = brick * cells_per_brick_side;
+    const auto [exit, axis] = brick_empty ? exit_of(box_first, cells_per_brick_side, origin, inverse) : leaving();
     if (!(exit < end)) return {end, end};
     t = std::max(exit, t);
+    glm::ivec3 next = cell;
     if (brick_empty) {
       // Across the brick's face, in the cell the ray reaches there.
-      cell = glm::clamp(cell_of(origin + t * direction), box_first, box_first + (box_cells - 1));
-      cell[axis] = step[axis] > 0 ? box_first[axis] + box_cells : box_first[axis] - 1;
+      next = glm::clamp(cell_of(origin + t * direction), box_first, box_first + (cells_per_brick_side - 1));
+      next[axis] = step[axis] > 0 ? box_first[axis] + cells_per_brick_side : box_first[axis] - 1;
     } else {
-      cell[axis] += step[axis];
+      next[axis] += step[axis];
     }
-    if (cell[axis] < 0 || cell[axis] >= cells_per_side) return {end, end};
-    if (cell_occupied(cell))
-      return {std::max(exit - margin, start), exit_of(cell, 1, origin, inverse).t - margin};
+    if (next[axis] < 0 || next[axis] >= cells_per_side) return {end, end};
+    cell = next;
+    if (brick_empty)
+      faces = glm::vec3(far_face(0), far_face(1), far_face(2));
+    else
+      faces[axis] = far_face(axis);
+    if (cell_occupied(cell)) return {std::max(exit - margin, start), leaving().t - margin};
   }
   return {t, t};
 }

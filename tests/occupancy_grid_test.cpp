@@ -119,6 +119,32 @@ TEST(OccupancyGrid, RaysStopBeforeTheSphereAndNeverInsideIt) {
   EXPECT_GT(misses, 100);
 }
 
+// Where a ray asks from inside an occupied cell, it is told it need not ask
+// again until it leaves the run of occupied cells it is in: every point
+// before `until` lies in an occupied cell, and the run reaches past the
+// ray's own cell where the shell is thick enough.
+TEST(OccupancyGrid, ARayInsideOccupiedCellsIsClearUntilItLeavesThem) {
+  const OccupancyGrid grid = sphere_grid();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  const float cell = 2.0f / OccupancyGrid::cells_per_side;
+  int beyond_own_cell = 0, asked = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const glm::vec3 origin = 0.45f * glm::vec3(unit(random), unit(random), unit(random));
+    glm::vec3 direction(unit(random), unit(random), unit(random));
+    if (glm::length(direction) < 0.1f || !grid.occupied(origin)) continue;
+    direction = glm::normalize(direction);
+    const Clearance clear = grid.next_occupied(origin, direction, 0.0f, 4.0f);
+    ++asked;
+    EXPECT_EQ(clear.from, 0.0f);
+    for (float t = 0.0f; t < clear.until; t += 1e-3f)
+      ASSERT_TRUE(grid.occupied(origin + t * direction)) << "ray " << n << " left the occupied cells at t = " << t;
+    beyond_own_cell += clear.until > 2.0f * cell;
+  }
+  EXPECT_GT(asked, 500);
+  EXPECT_GT(beyond_own_cell, asked / 2) << "the sphere's cells are a run of about 16 across";
+}
+
 // An enclosure that knows nothing leaves nothing empty; a grid that would
 // find too little empty is not built.
 TEST(OccupancyGrid, ABoundThatKnowsNothingSkipsNothing) {
