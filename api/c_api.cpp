@@ -7,9 +7,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "graph/parse.h"
 #include "interp/interpreter.h"
+#include "interp/interval_program.h"
+#include "jit/jit_compiler.h"
 #include "jit/jit_kernel.h"
 #include "nodes/globals.h"
 #include "nodes/output_contract.h"
@@ -20,7 +23,9 @@
 
 struct shadetree_graph {
   shadetree::LoadedGraph loaded;
+  int backend = SHADETREE_JIT;
   std::unique_ptr<shadetree::Kernel> kernel;
+  std::unique_ptr<shadetree::IntervalProgram> bounds;  // made by the first shadetree_bound
 };
 
 namespace shadetree {
@@ -59,6 +64,7 @@ shadetree_status finish_load(Result<LoadedGraph> loaded, int backend, shadetree_
   if (!loaded) return fail(loaded.error());
   auto result = std::make_unique<shadetree_graph>();
   result->loaded = std::move(*loaded);
+  result->backend = backend;
   if (backend == SHADETREE_INTERPRETER) {
     result->kernel = make_interpreted_kernel(result->loaded.ir);
   } else {
@@ -166,6 +172,39 @@ shadetree_status shadetree_run(shadetree_graph* graph, float frame, const float*
   }
   return guarded([&] {
     graph->kernel->bind(graph->loaded.params.data(), frame_uniforms(frame))->run(planes, outputs, count);
+    return succeed();
+  });
+}
+
+shadetree_status shadetree_bound(shadetree_graph* graph, float frame, const float* lo, const float* hi, float* out_lo,
+                                 float* out_hi) {
+  if (!graph || !lo || !hi || !out_lo || !out_hi)
+    return fail_with(ExitStatus::invalid_input, "shadetree_bound: graph, lo, hi, out_lo and out_hi must not be NULL");
+  SampleBox box;
+  for (int plane = 0; plane < varying_plane_count; ++plane) {
+    if (!(lo[plane] <= hi[plane]))
+      return fail_with(ExitStatus::invalid_input, "shadetree_bound: input plane " + std::to_string(plane) +
+                                                      " has lo > hi, or a NaN bound");
+    box.planes[plane] = {lo[plane], hi[plane]};
+  }
+  return guarded([&] {
+    if (!graph->bounds) {
+      auto program = std::make_unique<IntervalProgram>(graph->loaded.ir);
+      if (graph->backend == SHADETREE_JIT) {
+        Result<CompiledIntervalProgram> compiled = compile_interval_program(graph->loaded.ir, {});
+        if (!compiled) return fail(compiled.error());
+        program->use_compiled(compiled->evaluate, compiled->code);
+      }
+      graph->bounds = std::move(program);
+    }
+    const OutputLayout& layout = graph->bounds->outputs();
+    std::vector<lanes::Interval> outputs(static_cast<std::size_t>(layout.plane_count));
+    for (std::size_t plane = 0; plane < outputs.size(); ++plane) outputs[plane] = {out_lo[plane], out_hi[plane]};
+    graph->bounds->bind(graph->loaded.params.data(), frame_uniforms(frame)).evaluate(box, outputs.data());
+    for (std::size_t plane = 0; plane < outputs.size(); ++plane) {
+      out_lo[plane] = outputs[plane].lo;
+      out_hi[plane] = outputs[plane].hi;
+    }
     return succeed();
   });
 }

@@ -82,6 +82,19 @@ int shadetree_output_plane_count(const shadetree_graph* graph);
 shadetree_status shadetree_run(shadetree_graph* graph, float frame, const float* const* inputs,
                                float* const* outputs, size_t count);
 
+/* Encloses what shadetree_run computes over a box of its inputs: lo[i] and
+ * hi[i] bound input plane i (shadetree_input_plane_count() of each; an
+ * infinite bound where nothing is known), and out_lo[i], out_hi[i] receive
+ * an interval holding output plane i of every sample in the box (-inf and
+ * +inf where nothing is known; the planes of outputs the graph does not
+ * provide are left alone). For culling: where a volume's density is at most
+ * 0 over a box, no sample in it holds anything. With SHADETREE_JIT the
+ * graph's interval program is compiled on the first call (tens to hundreds
+ * of milliseconds) and kept; its enclosures are the interpreter's to the
+ * bit. */
+shadetree_status shadetree_bound(shadetree_graph* graph, float frame, const float* lo, const float* hi,
+                                 float* out_lo, float* out_hi);
+
 /* A graph of any kind through its driver, as `shadetree render` renders
  * it (a texture over its render domain, a surface graph on its scene or
  * the preview sphere, a volume through the ray marcher) at width x height,

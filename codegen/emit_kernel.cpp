@@ -29,11 +29,10 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include "codegen/kernel_split.h"
+#include "codegen/op_constant_globals.h"
 #include "codegen/op_library.h"
 #include "codegen/table_lookups.h"
 #include "nodes/dual_frame.h"
-#include "nodes/noise_tables.h"
-#include "nodes/registry.h"
 
 namespace shadetree {
 
@@ -60,28 +59,11 @@ class KernelEmitter {
         context_(module.getContext()),
         builder_(context_),
         state_(uniform_state_layout(ir)),
-        layout_(output_layout(ir)) {
+        layout_(output_layout(ir)),
+        constants_(ir, module, data_symbol) {
     float_ = builder_.getFloatTy();
     vector_ = llvm::FixedVectorType::get(float_, static_cast<unsigned>(width));
     ptr_ = builder_.getPtrTy();
-    auto* i32 = builder_.getInt32Ty();
-    constants_type_ = llvm::StructType::get(context_, {ptr_, ptr_, i32, llvm::ArrayType::get(i32, 2), i32,
-                                                       llvm::ArrayType::get(i32, max_op_args)});
-    // The graph's data (spline knots, images, meshes) as raw bytes: LLVM
-    // writes a byte array to the object in one piece, where it wrote an
-    // array of floats one element at a time (2.4 MB of image took 40 ms).
-    // Loads at constant offsets still fold. Large data is declared only
-    // (max_embedded_data_bytes), and read through the global offset table.
-    const std::size_t size = ir_.data.size() * sizeof(float);
-    auto* type = llvm::ArrayType::get(builder_.getInt8Ty(), size);
-    if (size > max_embedded_data_bytes) {
-      data_ = new llvm::GlobalVariable(module_, type, true, llvm::GlobalValue::ExternalLinkage, nullptr, data_symbol);
-    } else if (size > 0) {
-      const llvm::ArrayRef<std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(ir_.data.data()), size);
-      data_ = new llvm::GlobalVariable(module_, type, true, llvm::GlobalValue::InternalLinkage,
-                                       llvm::ConstantDataArray::get(context_, bytes), "shade_data");
-    }
-    if (data_) data_->setAlignment(llvm::Align(alignof(float)));
   }
 
   // void bind(const float* params, const float* uniform_globals, float* state)
@@ -364,57 +346,6 @@ class KernelEmitter {
 
   llvm::Value* splat(llvm::Value* scalar) { return builder_.CreateVectorSplat(static_cast<unsigned>(width_), scalar); }
 
-  llvm::Constant* data_pointer(const IrInstr& instr) {
-    if (!data_ || instr.data_count == 0) return llvm::ConstantPointerNull::get(ptr_);
-    return llvm::ConstantExpr::getInBoundsGetElementPtr(
-        data_->getValueType(), data_,
-        llvm::ArrayRef<llvm::Constant*>{builder_.getInt64(0),
-                                        builder_.getInt64(static_cast<std::uint64_t>(instr.data_offset) * sizeof(float))});
-  }
-
-  llvm::Constant* noise_tables_pointer(std::uint32_t seed) {
-    auto found = tables_.find(seed);
-    if (found != tables_.end()) return found->second;
-    const NoiseTables& tables = noise_tables(seed);
-    auto floats = [&](const GradientTable& values) {
-      return llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(values.data(), values.size()));
-    };
-    llvm::Constant* fields[] = {
-        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<float>(tables.hashed_gradient_xyzw.data(),
-                                                                     tables.hashed_gradient_xyzw.size())),
-        llvm::ConstantDataArray::get(context_, llvm::ArrayRef<std::int32_t>(tables.permutation.data(),
-                                                                             tables.permutation.size())),
-        floats(tables.gradient_x),        floats(tables.gradient_y),        floats(tables.gradient_z),
-        floats(tables.hashed_gradient_x), floats(tables.hashed_gradient_y), floats(tables.hashed_gradient_z)};
-    llvm::Constant* initializer = llvm::ConstantStruct::getAnon(context_, fields);
-    auto* global = new llvm::GlobalVariable(module_, initializer->getType(), true, llvm::GlobalValue::InternalLinkage,
-                                            initializer, "noise_tables_" + std::to_string(seed));
-    global->setAlignment(llvm::Align(64));
-    tables_[seed] = global;
-    return global;
-  }
-
-  // The instruction's OpConstants (nodes/op_frame.h) as a constant global.
-  llvm::Value* op_constants(const IrInstr& instr) {
-    auto int_constant = [&](int value) { return builder_.getInt32(value); };
-    std::vector<llvm::Constant*> arg_components;
-    for (int a = 0; a < max_op_args; ++a)
-      arg_components.push_back(int_constant(a < instr.arg_count ? component_count(argument_type(instr, a)) : 0));
-    llvm::Constant* tables = op_def(instr.op).tables == OpTables::noise
-                                 ? noise_tables_pointer(static_cast<std::uint32_t>(instr.immediate[0]))
-                                 : llvm::ConstantPointerNull::get(ptr_);
-    llvm::Constant* fields[] = {
-        data_pointer(instr),
-        tables,
-        int_constant(instr.data_count),
-        llvm::ConstantArray::get(llvm::ArrayType::get(builder_.getInt32Ty(), 2),
-                                 {int_constant(instr.immediate[0]), int_constant(instr.immediate[1])}),
-        int_constant(component_count(instr.type)),
-        llvm::ConstantArray::get(llvm::ArrayType::get(builder_.getInt32Ty(), max_op_args), arg_components)};
-    return new llvm::GlobalVariable(module_, constants_type_, true, llvm::GlobalValue::InternalLinkage,
-                                    llvm::ConstantStruct::get(constants_type_, fields), "op_constants");
-  }
-
   Status emit_instruction(int self) {
     const IrInstr& instr = ir_.code[self];
     switch (instr.kind) {
@@ -476,7 +407,7 @@ class KernelEmitter {
                               ? array_pointer(instr.args[a], component_count(argument_type(instr, a)),
                                               instr.dual ? dual_floats : 1)
                               : llvm::ConstantPointerNull::get(ptr_));
-    arguments.push_back(op_constants(instr));
+    arguments.push_back(constants_.of(instr));
     builder_.CreateCall(callee, arguments);
     return success();
   }
@@ -502,12 +433,10 @@ class KernelEmitter {
   llvm::Type* float_ = nullptr;
   llvm::FixedVectorType* vector_ = nullptr;
   llvm::PointerType* ptr_ = nullptr;
-  llvm::StructType* constants_type_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
   llvm::Value *params_ = nullptr, *uniforms_ = nullptr, *inputs_ = nullptr, *outputs_ = nullptr, *index_ = nullptr;
-  llvm::GlobalVariable* data_ = nullptr;
   std::vector<llvm::AllocaInst*> registers_;
-  std::map<std::uint32_t, llvm::Constant*> tables_;
+  OpConstantGlobals constants_;
 };
 
 // The instructions `function` brings when inlined: its own and those of
@@ -573,23 +502,6 @@ bool outline_large_ops(llvm::Module& module, const ShadeIR& ir, int width) {
   return true;
 }
 
-// Reads the bodies of the library functions the kernel calls, and of those
-// they call: a lazily loaded function has uses only from bodies read.
-bool materialize_called(llvm::Module& module) {
-  for (bool read = true; read;) {
-    read = false;
-    for (llvm::Function& function : module) {
-      if (!function.isMaterializable() || function.use_empty()) continue;
-      if (llvm::Error error = function.materialize()) {
-        llvm::consumeError(std::move(error));
-        return false;
-      }
-      read = true;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
@@ -600,19 +512,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   if (!module) return failure("the embedded op library bitcode is unreadable");
   module->setModuleIdentifier(function_name);
   define_table_lookups(*module, gathers);
-  // The library is only there to be inlined into this kernel.
-  for (llvm::Function& function : *module) {
-    if (function.isDeclaration()) continue;
-    function.setLinkage(llvm::GlobalValue::InternalLinkage);
-    function.removeFnAttr(llvm::Attribute::NoInline);
-    function.removeFnAttr(llvm::Attribute::OptimizeNone);
-    function.addFnAttr(llvm::Attribute::AlwaysInline);
-  }
-  // Its constant tables too (C++ inline variables, linkonce_odr): a weak
-  // definition shared by name would tie this kernel to the copy of the
-  // first kernel that defined it, which may be released before this one.
-  for (llvm::GlobalVariable& global : module->globals())
-    if (!global.isDeclaration()) global.setLinkage(llvm::GlobalValue::InternalLinkage);
+  make_library_inlined(*module);
   KernelEmitter emitter(ir, width, *module, kernel_data_symbol(function_name));
   std::vector<llvm::Function*> entry_points;
   if (part == KernelPart::first) {
@@ -638,20 +538,7 @@ Result<std::unique_ptr<llvm::Module>> emit_kernel_module(const ShadeIR& ir, int 
   }
   if (!materialize_called(*module)) return failure("the embedded op library bitcode is unreadable");
   if (!outline_large_ops(*module, ir, width)) return failure("the embedded op library bitcode is unreadable");
-  // Drop the library functions this kernel never calls (other ops, dual
-  // forms) before the optimizer spends time on them.
-  for (bool erased = true; erased;) {
-    erased = false;
-    for (llvm::Function& function : llvm::make_early_inc_range(*module)) {
-      if (std::ranges::find(entry_points, &function) != entry_points.end() || !function.use_empty()) continue;
-      function.eraseFromParent();
-      erased = true;
-    }
-  }
-  if (llvm::Error error = module->materializeAll()) {
-    llvm::consumeError(std::move(error));
-    return failure("the embedded op library bitcode is unreadable");
-  }
+  if (!drop_uncalled(*module, entry_points)) return failure("the embedded op library bitcode is unreadable");
   return module;
 }
 

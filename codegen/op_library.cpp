@@ -63,6 +63,49 @@ std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context, int wi
   return std::move(*module);
 }
 
+void make_library_inlined(llvm::Module& module) {
+  for (llvm::Function& function : module) {
+    if (function.isDeclaration()) continue;
+    function.setLinkage(llvm::GlobalValue::InternalLinkage);
+    function.removeFnAttr(llvm::Attribute::NoInline);
+    function.removeFnAttr(llvm::Attribute::OptimizeNone);
+    function.addFnAttr(llvm::Attribute::AlwaysInline);
+  }
+  for (llvm::GlobalVariable& global : module.globals())
+    if (!global.isDeclaration()) global.setLinkage(llvm::GlobalValue::InternalLinkage);
+}
+
+bool materialize_called(llvm::Module& module) {
+  for (bool read = true; read;) {
+    read = false;
+    for (llvm::Function& function : module) {
+      if (!function.isMaterializable() || function.use_empty()) continue;
+      if (llvm::Error error = function.materialize()) {
+        llvm::consumeError(std::move(error));
+        return false;
+      }
+      read = true;
+    }
+  }
+  return true;
+}
+
+bool drop_uncalled(llvm::Module& module, const std::vector<llvm::Function*>& entry_points) {
+  for (bool erased = true; erased;) {
+    erased = false;
+    for (llvm::Function& function : llvm::make_early_inc_range(module)) {
+      if (std::ranges::find(entry_points, &function) != entry_points.end() || !function.use_empty()) continue;
+      function.eraseFromParent();
+      erased = true;
+    }
+  }
+  if (llvm::Error error = module.materializeAll()) {
+    llvm::consumeError(std::move(error));
+    return false;
+  }
+  return true;
+}
+
 std::string op_library_symbol(OpId op, bool dual, int width) {
   return std::string("st_") + op_symbol(op) + (dual ? "_dual" : "") + "_w" + std::to_string(width);
 }

@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "nodes/op_id.h"
 
 namespace llvm {
+class Function;
 class LLVMContext;
 class Module;
 }  // namespace llvm
@@ -21,6 +23,22 @@ namespace shadetree {
 // functions, and reading them all took 10 ms of every compile). Null for
 // another width, or if the embedded bitcode is unreadable (a build fault).
 std::unique_ptr<llvm::Module> load_op_library(llvm::LLVMContext& context, int width);
+
+// The library loaded in `module` made to be inlined into the code emitted
+// there: its functions and constant tables internal (a weak definition
+// shared by name would tie a kernel to the copy of the first kernel that
+// defined it, which may be released before it) and always inlined.
+void make_library_inlined(llvm::Module& module);
+
+// Reads the bodies of the library functions the emitted code calls, and of
+// those they call: a lazily loaded function has uses only from bodies
+// read. False if the bitcode is unreadable.
+bool materialize_called(llvm::Module& module);
+
+// Drops the library functions that neither `entry_points` nor what they
+// call use (other ops, dual forms) before the optimizer spends time on
+// them, and reads the rest. False if the bitcode is unreadable.
+bool drop_uncalled(llvm::Module& module, const std::vector<llvm::Function*>& entry_points);
 
 // The library function of `op` at `width`, over duals if `dual`:
 // st_<op>_w<W> or st_<op>_dual_w<W> (codegen/ops_bitcode.cpp).

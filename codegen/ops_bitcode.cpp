@@ -14,11 +14,23 @@
 // (an array of 1 to 3 F) and unused arguments are null; and the dual form
 // of each op (nodes/dual_frame.h), st_<op>_dual_w<W>, the same with every
 // F replaced by a Dual<F> of four F.
+//
+// The library of width 4 also holds each op's interval form (nodes/
+// interval_frame.h), which no width changes, for the JIT's interval
+// programs (codegen/emit_interval_program.h):
+//   void st_<op>_interval(const OpConstants* constants,
+//                         const Interval* const* in_planes,
+//                         Interval* const* out_planes)
+// with IntervalFrame's planes, and the two things such a program does
+// besides ops (nodes/ops/interval_form.h): st_interval_region_may_run and
+// st_interval_reported.
 #include "nodes/lane_vector.h"
-// After the vector primitives, which its templates call.
+#include "nodes/lane_interval.h"
+// After the vector and interval primitives, which its templates call.
 #include "nodes/dual_frame.h"
 #include "nodes/op_id.h"
 #include "nodes/ops/evaluated.h"
+#include "nodes/ops/interval_form.h"
 
 namespace shadetree {
 namespace {
@@ -68,3 +80,21 @@ using namespace shadetree;
 #define ST_OP_AT_LIBRARY_WIDTH(name) ST_OP_AT(name, SHADETREE_OP_LIBRARY_WIDTH)
 
 SHADETREE_LIBRARY_OPS(ST_OP_AT_LIBRARY_WIDTH)
+
+#if SHADETREE_OP_LIBRARY_WIDTH == 4
+#define ST_INTERVAL_OP(name)                                                                                 \
+  extern "C" void st_##name##_interval(const OpConstants* constants, const lanes::Interval* const* in_planes, \
+                                       lanes::Interval* const* out_planes) {                                 \
+    if constexpr (ops::Evaluated<ops::name, LaneFrame>)                                                      \
+      evaluate_over_intervals<ops::name>(IntervalFrame{{constants}, in_planes, out_planes});                \
+  }
+SHADETREE_LIBRARY_OPS(ST_INTERVAL_OP)
+
+extern "C" int st_interval_region_may_run(const lanes::Interval* condition, int branch) {
+  return region_may_run(*condition, branch);
+}
+
+extern "C" void st_interval_reported(const lanes::Interval* value, lanes::Interval* reported) {
+  *reported = reported_enclosure(*value);
+}
+#endif

@@ -4,26 +4,15 @@
 // that states no evaluate_interval does not compile.
 #include "interp/interval_kernels.h"
 
+#include "nodes/ops/interval_form.h"
 #include "nodes/ops/op_table.h"
-#include "nodes/ops/evaluated.h"
 
 namespace shadetree::interp {
 namespace {
 
 template <class Op>
-concept OwnIntervalForm = requires(const IntervalFrame& x) { Op::evaluate_interval(x); };
-
-template <class Op>
-void run_interval(const IntervalFrame& x) {
-  if constexpr (OwnIntervalForm<Op>)
-    Op::evaluate_interval(x);
-  else
-    Op::evaluate(x);
-}
-
-template <class Op>
 constexpr IntervalKernel interval_kernel_of() {
-  if constexpr (ops::Evaluated<Op, LaneFrame>) return &run_interval<Op>;
+  if constexpr (ops::Evaluated<Op, LaneFrame>) return &evaluate_over_intervals<Op>;
   return nullptr;
 }
 

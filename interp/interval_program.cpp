@@ -9,6 +9,8 @@
 #include <cmath>
 
 #include "ir/op_constants.h"
+#include "ir/output_dependencies.h"
+#include "nodes/ops/interval_form.h"
 
 namespace shadetree {
 
@@ -26,36 +28,28 @@ IntervalProgram::IntervalProgram(ShadeIR ir, const std::vector<OutputId>& bounde
     kernels_[i] = interp::interval_kernel(instr.op);
     constants_[i] = op_constants(ir_, instr);
   }
-  // What the bounded outputs depend on, walking back from them: a value's
-  // arguments, and a region's condition where the region holds something
-  // needed (its contents come after it, so are decided first).
-  needed_.assign(ir_.code.size(), 0);
-  bounded_.assign(ir_.outputs.size(), 0);
-  for (std::size_t o = 0; o < ir_.outputs.size(); ++o)
-    if (bounded.empty() || std::find(bounded.begin(), bounded.end(), ir_.outputs[o].id) != bounded.end()) {
-      bounded_[o] = 1;
-      needed_[static_cast<std::size_t>(ir_.outputs[o].value)] = 1;
-    }
-  for (std::size_t i = ir_.code.size(); i-- > 0;) {
-    const IrInstr& instr = ir_.code[i];
-    if (instr.kind == IrOpKind::begin_region) {
-      const auto end = static_cast<std::size_t>(instr.immediate[1]);
-      if (std::any_of(needed_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                      needed_.begin() + static_cast<std::ptrdiff_t>(end), [](char n) { return n != 0; }))
-        needed_[i] = needed_[end] = 1;
-    }
-    if (!needed_[i]) continue;
-    for (int a = 0; a < instr.arg_count; ++a) needed_[static_cast<std::size_t>(instr.args[a])] = 1;
-  }
+  OutputDependencies needs = output_dependencies(ir_, bounded);
+  needed_ = std::move(needs.instructions);
+  bounded_ = std::move(needs.outputs);
 }
 
 BoundIntervalProgram IntervalProgram::bind(const float* params, const UniformInputs& uniforms) const {
   return BoundIntervalProgram(*this, params, uniforms);
 }
 
+void IntervalProgram::use_compiled(IntervalProgramFunction evaluate, std::shared_ptr<const void> code) {
+  compiled_ = evaluate;
+  compiled_code_ = std::move(code);
+}
+
 BoundIntervalProgram::BoundIntervalProgram(const IntervalProgram& program, const float* params,
                                            const UniformInputs& uniforms)
     : program_(&program), params_(params), uniforms_(uniforms) {
+  if (program.compiled_) {
+    if (params) compiled_params_.assign(params, params + program.ir_.param_block_size);
+    params_ = nullptr;
+    return;
+  }
   const std::vector<IrInstr>& code = program.ir_.code;
   registers_.resize(code.size() * 3);
   in_planes_.resize(code.size() * 3 * max_op_args);
@@ -107,8 +101,7 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
         // A region that no sample of the box takes is passed over: the
         // `if` that joins it takes the other side where its condition is
         // certain, as it then is.
-        const lanes::IntervalMask condition = frame::loaded(*in_planes_[i * max_op_args * 3]);
-        if (!(instr.immediate[0] == 0 ? condition.may_hold : condition.may_fail))
+        if (!region_may_run(*in_planes_[i * max_op_args * 3], instr.immediate[0]))
           i = static_cast<std::size_t>(instr.immediate[1]);
         break;
       }
@@ -119,6 +112,10 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
 }
 
 void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
+  if (program_->compiled_) {
+    program_->compiled_(compiled_params_.data(), uniforms_.values, box.planes, outputs);
+    return;
+  }
   execute(/*uniform_pass=*/false, box);
   const OutputLayout& layout = program_->outputs_;
   for (std::size_t o = 0; o < program_->ir_.outputs.size(); ++o) {
@@ -129,7 +126,7 @@ void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
     for (int c = 0; c < component_count(output.type); ++c) {
       const Interval value =
           registers_[static_cast<std::size_t>(output.value) * 3 + static_cast<std::size_t>(std::min(c, held - 1))];
-      outputs[layout.plane(output.id, c)] = lanes::is_finite(value) ? value : lanes::everything();
+      outputs[layout.plane(output.id, c)] = reported_enclosure(value);
     }
   }
 }

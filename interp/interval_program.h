@@ -48,6 +48,12 @@ class IntervalProgram {
   // computed once, as points.
   BoundIntervalProgram bind(const float* params, const UniformInputs& uniforms) const;
 
+  // Runs the same program compiled (the JIT's compile_interval_program,
+  // jit/jit_compiler.h), whose enclosures are these to the bit, from now
+  // on; `code` keeps `evaluate` callable.
+  void use_compiled(IntervalProgramFunction evaluate, std::shared_ptr<const void> code);
+  bool compiled() const { return compiled_ != nullptr; }
+
  private:
   friend class BoundIntervalProgram;
   ShadeIR ir_;
@@ -56,6 +62,8 @@ class IntervalProgram {
   std::vector<OpConstants> constants_;
   std::vector<char> needed_;  // per instruction: a bounded output depends on it
   std::vector<char> bounded_;  // per output of the IR
+  IntervalProgramFunction compiled_ = nullptr;
+  std::shared_ptr<const void> compiled_code_;
 };
 
 class BoundIntervalProgram {
@@ -79,6 +87,7 @@ class BoundIntervalProgram {
   std::vector<const lanes::Interval*> in_planes_;    // per instruction: max_op_args x 3
   std::vector<lanes::Interval*> out_planes_;         // per instruction: 3
   const float* params_ = nullptr;                    // during binding only
+  std::vector<float> compiled_params_;               // for a compiled program, which reads them each time
   UniformInputs uniforms_;
 };
 

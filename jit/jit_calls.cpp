@@ -59,6 +59,11 @@ std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& set
   return jit() ? jit()->kernel_identity(ir, width, settings) : std::string();
 }
 
+Result<CompiledIntervalProgram> compile_interval_program(const ShadeIR& ir, const std::vector<OutputId>& bounded) {
+  if (!jit()) return jit_missing();
+  return jit()->compile_interval_program(ir, bounded);
+}
+
 Result<std::string> kernel_listing(const ShadeIR& ir, int width, Listing listing, const JitSettings& settings) {
   if (!jit()) return jit_missing();
   return jit()->kernel_listing(ir, width, listing, settings);

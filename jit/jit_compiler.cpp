@@ -29,6 +29,7 @@
 #include <llvm/Support/xxhash.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include "codegen/emit_interval_program.h"
 #include "codegen/emit_kernel.h"
 #include "codegen/kernel_split.h"
 #include "codegen/op_library.h"
@@ -45,27 +46,40 @@ namespace {
 std::atomic<long> resident_kernels{0};
 }  // namespace
 
-struct KernelCode {
-  KernelCode(std::string name, llvm::orc::ResourceTrackerSP tracker, std::shared_ptr<const std::vector<float>> data,
-             const CompiledKernel& functions, std::recursive_mutex& jit_mutex)
-      : name(std::move(name)), tracker(std::move(tracker)), data(std::move(data)), bind(functions.bind),
-        run(functions.run), width(functions.width), jit_mutex(jit_mutex) {
-    ++resident_kernels;
-  }
+// Objects linked into the JIT under a resource tracker of their own, and
+// the graph data their code reads past max_embedded_data_bytes.
+struct LinkedCode {
+  llvm::orc::ResourceTrackerSP tracker;
+  std::shared_ptr<const std::vector<float>> data;
+};
+
+// Code in the JIT, removed from it with its last holder.
+struct ResidentCode {
+  ResidentCode(LinkedCode linked, std::recursive_mutex& jit_mutex)
+      : linked(std::move(linked)), jit_mutex(jit_mutex) {}
   // Removes the code under the JIT's lock, so a compile of the same
   // program waits until these symbols are gone before defining them anew.
-  ~KernelCode() {
+  ~ResidentCode() {
     std::lock_guard lock(jit_mutex);
-    llvm::consumeError(tracker->remove());
-    --resident_kernels;
+    llvm::consumeError(linked.tracker->remove());
   }
+  ResidentCode(const ResidentCode&) = delete;
+  ResidentCode& operator=(const ResidentCode&) = delete;
+  LinkedCode linked;
+  std::recursive_mutex& jit_mutex;
+};
+
+struct KernelCode : ResidentCode {
+  KernelCode(std::string name, LinkedCode linked, const CompiledKernel& functions, std::recursive_mutex& jit_mutex)
+      : ResidentCode(std::move(linked), jit_mutex), name(std::move(name)), bind(functions.bind), run(functions.run),
+        width(functions.width) {
+    ++resident_kernels;
+  }
+  ~KernelCode() { --resident_kernels; }
   std::string name;
-  llvm::orc::ResourceTrackerSP tracker;
-  std::shared_ptr<const std::vector<float>> data;  // the data its code reads past max_embedded_data_bytes
   KernelBindFunction bind;
   KernelRunFunction run;
   int width;
-  std::recursive_mutex& jit_mutex;
 };
 
 namespace {
@@ -252,6 +266,34 @@ class Jit {
     return admit(*code, CacheHit::none, elapsed(), evicted);
   }
 
+  Result<CompiledIntervalProgram> compile_intervals(const ShadeIR& ir, const std::vector<OutputId>& bounded) {
+    if (!jit_) return failure("cannot start the LLVM JIT (--backend interp still works): " + startup_error_);
+    const auto start = std::chrono::steady_clock::now();
+    const std::string name = "shade_bounds_" + std::to_string(++uncached_compiles_);
+    llvm::LLVMContext context;
+    Result<std::unique_ptr<llvm::Module>> module = emit_interval_module(ir, bounded, context, name);
+    if (!module) return module.error();
+    {
+      Result<LentMachine> machine = lend_machine(code_generation_level(Optimization::full));
+      if (!machine) return machine.error();
+      optimize_for(**module, **machine, Optimization::full);
+    }
+    Result<std::unique_ptr<llvm::MemoryBuffer>> object = generate_code(**module, code_generation_level(Optimization::full));
+    if (!object) return object.error();
+    std::lock_guard lock(mutex_);
+    KernelObjects objects;
+    objects.push_back({name, std::move(*object)});
+    Result<LinkedCode> linked = link(ir, name, std::move(objects));
+    if (!linked) return linked.error();
+    Result<llvm::orc::ExecutorAddr> evaluate = address_of(name, *linked);
+    if (!evaluate) return evaluate.error();
+    return CompiledIntervalProgram{
+        .evaluate = evaluate->toPtr<IntervalProgramFunction>(),
+        .compile_milliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+        .code = std::make_shared<const ResidentCode>(std::move(*linked), mutex_)};
+  }
+
   // A target machine for the host, at `level`; each compile has its own
   // (a TargetMachine is not safe to share between threads).
   Result<std::unique_ptr<llvm::TargetMachine>> target_machine(llvm::CodeGenOptLevel level) const {
@@ -414,43 +456,52 @@ class Jit {
   // data, codegen/emit_kernel.h) to a copy the kernel keeps.
   Result<std::shared_ptr<const KernelCode>> add_objects(const ShadeIR& ir, const std::string& name, int width,
                                                         KernelObjects objects) {
-    llvm::orc::ResourceTrackerSP tracker = jit_->getMainJITDylib().createResourceTracker();
-    std::shared_ptr<const std::vector<float>> data;
+    Result<LinkedCode> linked = link(ir, name, std::move(objects));
+    if (!linked) return linked.error();
+    return look_up(name, width, std::move(*linked));
+  }
+
+  // Objects linked under a resource tracker of their own, with the data
+  // they declare (large data, codegen/emit_kernel.h) bound to a copy;
+  // nothing is left in the JIT on failure.
+  Result<LinkedCode> link(const ShadeIR& ir, const std::string& name, KernelObjects objects) {
+    LinkedCode linked{jit_->getMainJITDylib().createResourceTracker(), nullptr};
     if (ir.data.size() * sizeof(float) > max_embedded_data_bytes) {
-      data = std::make_shared<const std::vector<float>>(ir.data);
+      linked.data = std::make_shared<const std::vector<float>>(ir.data);
       const llvm::orc::SymbolMap symbols{
           {jit_->mangleAndIntern(kernel_data_symbol(name)),
-           {llvm::orc::ExecutorAddr::fromPtr(data->data()), llvm::JITSymbolFlags::Exported}}};
-      if (llvm::Error error = tracker->getJITDylib().define(llvm::orc::absoluteSymbols(symbols), tracker)) {
-        llvm::consumeError(tracker->remove());
+           {llvm::orc::ExecutorAddr::fromPtr(linked.data->data()), llvm::JITSymbolFlags::Exported}}};
+      if (llvm::Error error = linked.tracker->getJITDylib().define(llvm::orc::absoluteSymbols(symbols), linked.tracker)) {
+        llvm::consumeError(linked.tracker->remove());
         return failure("JIT: " + error_text(std::move(error)));
       }
     }
     for (KernelObject& object : objects)
-      if (llvm::Error error = jit_->addObjectFile(tracker, std::move(object.code))) {
-        llvm::consumeError(tracker->remove());
+      if (llvm::Error error = jit_->addObjectFile(linked.tracker, std::move(object.code))) {
+        llvm::consumeError(linked.tracker->remove());
         return failure("JIT: " + error_text(std::move(error)));
       }
-    return look_up(name, width, tracker, std::move(data));
+    return linked;
   }
 
-  // The kernel's two functions, once its object is in the JIT under
-  // `tracker`; a kernel that cannot be found is removed again.
-  Result<std::shared_ptr<const KernelCode>> look_up(const std::string& name, int width,
-                                                    const llvm::orc::ResourceTrackerSP& tracker,
-                                                    std::shared_ptr<const std::vector<float>> data) {
-    auto missing = [&](llvm::Error error) -> Diagnostic {
-      llvm::consumeError(tracker->remove());
-      return failure("JIT: " + error_text(std::move(error)));
-    };
-    auto bind = jit_->lookup(name + "_bind");
-    if (!bind) return missing(bind.takeError());
-    auto run = jit_->lookup(name + "_run");
-    if (!run) return missing(run.takeError());
+  // The address of `symbol` in linked code; code whose symbol cannot be
+  // found is removed again.
+  Result<llvm::orc::ExecutorAddr> address_of(const std::string& symbol, const LinkedCode& linked) {
+    auto address = jit_->lookup(symbol);
+    if (address) return *address;
+    llvm::consumeError(linked.tracker->remove());
+    return failure("JIT: " + error_text(address.takeError()));
+  }
+
+  // The kernel's two functions, once its objects are linked.
+  Result<std::shared_ptr<const KernelCode>> look_up(const std::string& name, int width, LinkedCode linked) {
+    Result<llvm::orc::ExecutorAddr> bind = address_of(name + "_bind", linked);
+    if (!bind) return bind.error();
+    Result<llvm::orc::ExecutorAddr> run = address_of(name + "_run", linked);
+    if (!run) return run.error();
     const CompiledKernel functions{
         .bind = bind->toPtr<KernelBindFunction>(), .run = run->toPtr<KernelRunFunction>(), .width = width};
-    return std::shared_ptr<const KernelCode>(
-        std::make_shared<KernelCode>(name, tracker, std::move(data), functions, mutex_));
+    return std::shared_ptr<const KernelCode>(std::make_shared<KernelCode>(name, std::move(linked), functions, mutex_));
   }
 
   static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {
@@ -513,6 +564,10 @@ Result<CompiledKernel> compile_kernel(const ShadeIR& ir, int width, const JitSet
   Result<CompiledKernel> compiled = Jit::instance().compile(ir, width, settings, false);
   if (compiled) compiled->state_size = uniform_state_layout(ir).size;
   return compiled;
+}
+
+Result<CompiledIntervalProgram> compile_interval_program(const ShadeIR& ir, const std::vector<OutputId>& bounded) {
+  return Jit::instance().compile_intervals(ir, bounded);
 }
 
 std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& settings) {

@@ -13,10 +13,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "codegen/emit_kernel.h"
 #include "graph/diagnostic.h"
 #include "ir/shade_ir.h"
+#include "ir/kernel.h"
 #include "jit/host_target.h"
 
 namespace shadetree {
@@ -77,6 +79,19 @@ std::optional<CompiledKernel> cached_kernel(const ShadeIR& ir, int width, const 
 // The name the JIT knows the kernel of `ir` by: equal for two programs
 // exactly when they compile to the same machine code.
 std::string kernel_identity(const ShadeIR& ir, int width, const JitSettings& settings = {});
+
+// An interval program compiled (codegen/emit_interval_program.h): the
+// enclosures of `bounded` outputs (every output where empty) over a box
+// of the varying globals, the interpreter's to the bit.
+struct CompiledIntervalProgram {
+  IntervalProgramFunction evaluate = nullptr;
+  double compile_milliseconds = 0;
+  std::shared_ptr<const void> code;  // keeps evaluate callable
+};
+
+// Compiles the interval program of `ir` anew each time (a renderer
+// compiles one a frame or a sequence); the full pipeline.
+Result<CompiledIntervalProgram> compile_interval_program(const ShadeIR& ir, const std::vector<OutputId>& bounded);
 
 // The kernel's optimized LLVM IR, or its assembly.
 enum class Listing { optimized_llvm_ir, assembly };

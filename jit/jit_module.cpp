@@ -7,6 +7,7 @@ extern "C" __attribute__((visibility("default"))) const shadetree::JitModule* sh
       .compile_kernel = &compile_kernel,
       .cached_kernel = &cached_kernel,
       .kernel_identity = &kernel_identity,
+      .compile_interval_program = &compile_interval_program,
       .kernel_listing = &kernel_listing,
       .resident_kernel_count = &resident_kernel_count,
       .host_vector_width = &host_vector_width,

@@ -17,13 +17,14 @@
 
 namespace shadetree {
 
-inline constexpr int jit_module_version = 1;
+inline constexpr int jit_module_version = 2;
 
 struct JitModule {
   int version = jit_module_version;
   Result<CompiledKernel> (*compile_kernel)(const ShadeIR&, int, const JitSettings&);
   std::optional<CompiledKernel> (*cached_kernel)(const ShadeIR&, int, const JitSettings&);
   std::string (*kernel_identity)(const ShadeIR&, int, const JitSettings&);
+  Result<CompiledIntervalProgram> (*compile_interval_program)(const ShadeIR&, const std::vector<OutputId>&);
   Result<std::string> (*kernel_listing)(const ShadeIR&, int, Listing, const JitSettings&);
   long (*resident_kernel_count)();
   int (*host_vector_width)();

@@ -64,16 +64,19 @@ Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, 
                                                              KernelPart part, const KernelSplit& split) {
   Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers, part, split);
   if (!module) return module.error();
-  llvm::Module& m = **module;
-  m.setDataLayout(machine.createDataLayout());
-  m.setTargetTriple(machine.getTargetTriple().str());
-  for (llvm::Function& function : m) {
+  optimize_for(**module, machine, optimization);
+  return module;
+}
+
+void optimize_for(llvm::Module& module, llvm::TargetMachine& machine, Optimization optimization) {
+  module.setDataLayout(machine.createDataLayout());
+  module.setTargetTriple(machine.getTargetTriple().str());
+  for (llvm::Function& function : module) {
     if (function.isDeclaration()) continue;
     function.addFnAttr("target-cpu", machine.getTargetCPU());
     function.addFnAttr("target-features", machine.getTargetFeatureString());
   }
-  optimize_module(m, machine, optimization);
-  return module;
+  optimize_module(module, machine, optimization);
 }
 
 Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine) {

@@ -30,6 +30,10 @@ Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, 
                                                              KernelPart part = KernelPart::whole,
                                                              const KernelSplit& split = {});
 
+// An emitted module (a kernel's, an interval program's) made for
+// `machine` and optimized.
+void optimize_for(llvm::Module& module, llvm::TargetMachine& machine, Optimization optimization);
+
 // The module's assembly for `machine`.
 Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine);
 

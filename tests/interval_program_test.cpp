@@ -18,6 +18,7 @@
 #include "pipeline/compile_graph.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
+#include "support/interval_enclosure.h"
 #include "support/one_op_graph.h"
 #include "support/random_graph.h"
 #include "support/test_files.h"
@@ -28,12 +29,7 @@ namespace {
 using lanes::encloses;
 using lanes::Interval;
 
-std::string show(Interval x) {
-  std::ostringstream text;
-  text.precision(9);
-  text << "[" << x.lo << ", " << x.hi << "]";
-  return text.str();
-}
+std::string show(Interval x) { return testing::shown(x); }
 
 TEST(IntervalKernels, EveryOpWithALaneFormHasAnIntervalForm) {
   for (const OpDef& op : all_ops())
@@ -133,60 +129,15 @@ TEST(IntervalKernels, EveryOpEnclosesItsLaneFormOverRandomBoxes) {
   }
 }
 
-// The uniforms a volume is marched with.
-UniformInputs march_uniforms(const VolumeDesc& volume) {
-  UniformInputs uniforms;
-  uniforms.set(GlobalId::step_size, march_step(volume));
-  return uniforms;
-}
-
 TEST(IntervalProgram, GalleryVolumesEncloseTheInterpreterOverBoxesOfP) {
-  constexpr std::size_t samples = 256;
   for (const std::string& path : testing::gallery_graphs(GraphKind::volume)) {
     SCOPED_TRACE(testing::gallery_graph_name(path));
     Result<LoadedGraph> loaded = testing::load_gallery_graph(path);
     ASSERT_TRUE(loaded) << loaded.error().message;
     const VolumeDesc& volume = *loaded->graph->render.volume;
-    const UniformInputs uniforms = march_uniforms(volume);
-    IntervalProgram program(loaded->ir);
-    BoundIntervalProgram bound = program.bind(loaded->params.data(), uniforms);
-    auto kernel = make_interpreted_kernel(loaded->ir);
-    auto binding = kernel->bind(loaded->params.data(), uniforms);
-    SampleBuffers inputs(samples, GlobalSet().set());
-    OutputBuffers outputs(samples, kernel->outputs());
-    std::vector<Interval> enclosures(static_cast<std::size_t>(kernel->outputs().plane_count));
-    std::mt19937 random(7);
-    auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(random); };
-    for (int b = 0; b < 300; ++b) {
-      SampleBox box;
-      const float fractions[] = {0.0f, 0.002f, 0.02f, 0.1f, 0.5f};
-      const float fraction = fractions[b % 5];
-      for (int a = 0; a < 3; ++a) {
-        const float extent = volume.bounds_max[a] - volume.bounds_min[a];
-        const float centre = uniform(volume.bounds_min[a], volume.bounds_max[a]), half = fraction * extent * 0.5f;
-        box.set(GlobalId::P, {centre - half, centre + half}, a);
-      }
-      const float direction[3] = {0.48f, -0.6f, 0.64f};
-      for (int a = 0; a < 3; ++a) box.set(GlobalId::I, direction[a], a);
-      box.set(GlobalId::filter_width, {0.0f, 0.01f});
-      box.set(GlobalId::density, {0.0f, 1.0f});
-      for (GlobalId id : {GlobalId::N, GlobalId::uv, GlobalId::L, GlobalId::surface})
-        for (int c = 0; c < global_def(id).components; ++c) box.set(id, 0.0f, c);
-      for (int plane = 0; plane < varying_plane_count; ++plane)
-        for (std::size_t i = 0; i < samples; ++i) {
-          const Interval x = box.planes[plane];
-          float* to = const_cast<float*>(inputs.inputs().planes[plane]);
-          to[i] = i == 0 ? x.lo : i == 1 ? x.hi : std::min(x.hi, x.lo + (x.hi - x.lo) * uniform(0, 1));
-        }
-      binding->run(inputs.inputs(), outputs.planes(), samples);
-      bound.evaluate(box, enclosures.data());
-      for (int plane : provided_planes(kernel->outputs()))
-        for (std::size_t i = 0; i < samples; ++i)
-          ASSERT_TRUE(encloses(enclosures[static_cast<std::size_t>(plane)], outputs.plane(plane)[i]))
-              << "plane " << plane << ": " << outputs.plane(plane)[i] << " outside "
-              << show(enclosures[static_cast<std::size_t>(plane)]) << " for P in " << show(box.planes[0]) << " x "
-              << show(box.planes[1]) << " x " << show(box.planes[2]);
-    }
+    const IntervalProgram program(loaded->ir);
+    testing::expect_program_encloses_the_interpreter(program, loaded->ir, loaded->params, testing::march_uniforms(volume),
+                                                      volume.bounds_min, volume.bounds_max, 300);
   }
 }
 
@@ -339,7 +290,7 @@ int empty_bricks(const char* path) {
   Result<LoadedGraph> loaded = testing::load_gallery_graph(path);
   EXPECT_TRUE(loaded) << loaded.error().message;
   IntervalProgram program(loaded->ir);
-  BoundIntervalProgram bound = program.bind(loaded->params.data(), march_uniforms(*loaded->graph->render.volume));
+  BoundIntervalProgram bound = program.bind(loaded->params.data(), testing::march_uniforms(*loaded->graph->render.volume));
   const VolumeDesc& volume = *loaded->graph->render.volume;
   const OutputLayout& layout = program.outputs();
   const int plane = layout.plane(layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density);
