@@ -1,7 +1,7 @@
 // The installed package: `cmake --install` of this build into a temporary
 // prefix, then examples/ configured with find_package(shadetree) against
-// it, built, and run on gallery graphs (the C API renders a PNG, the C++
-// stages evaluate a graph).
+// it, built, and run on gallery graphs (the C API renders a PNG and finds
+// a volume's empty space, the C++ stages evaluate a graph).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -64,6 +64,18 @@ TEST(Install, ExamplesBuildAgainstTheInstalledPackageAndRun) {
             2)
       << "a param out of range: " << log;
   EXPECT_NE(log.find("scale"), std::string::npos) << log;
+
+  // The noisy sphere reaches about 1.35 from its centre: of 16^3 boxes of
+  // [-1.4, 1.4]^3 the corners' are certainly empty (IntervalProgram.
+  // NoisySphereSkipsTheBricksBeyondItsBumps finds 1639 of 4096 in its bounds).
+  log.clear();
+  ASSERT_EQ(run((build / "empty_space").string() + " " SHADETREE_SOURCE_DIR "/graphs/noisy_sphere.json 1.4 16", &log), 0)
+      << log;
+  EXPECT_NE(log.find(" of 4096 boxes of [-1.4, 1.4]^3 certainly empty"), std::string::npos) << log;
+  EXPECT_GT(std::atol(log.c_str()), 1000) << log;
+  log.clear();
+  EXPECT_EQ(run((build / "empty_space").string() + " " SHADETREE_SOURCE_DIR "/graphs/marble.json 1 4", &log), 2) << log;
+  EXPECT_NE(log.find("not a volume graph"), std::string::npos) << log;
 
   log.clear();
   ASSERT_EQ(run((build / "evaluate_graph").string() + " " SHADETREE_SOURCE_DIR "/graphs/marble.json", &log), 0) << log;
