@@ -201,7 +201,7 @@ class IntervalEmitter {
   }
   // The point interval [value, value].
   void store_point(int self, int c, llvm::Value* value) {
-    llvm::Value* interval = builder_.CreateInsertValue(llvm::UndefValue::get(interval_), value, 0);
+    llvm::Value* interval = builder_.CreateInsertValue(llvm::PoisonValue::get(interval_), value, 0);
     builder_.CreateStore(builder_.CreateInsertValue(interval, value, 1), component(self, c));
   }
 
