@@ -52,7 +52,6 @@ class IntervalProgram {
   // jit/jit_compiler.h), whose enclosures are these to the bit, from now
   // on; `code` keeps `evaluate` callable.
   void use_compiled(IntervalProgramFunction evaluate, std::shared_ptr<const void> code);
-  bool compiled() const { return compiled_ != nullptr; }
 
  private:
   friend class BoundIntervalProgram;

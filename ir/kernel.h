@@ -36,13 +36,13 @@ struct SampleInputs {
   }
 };
 
-// The uniform globals of a binding.
 // A compiled interval program (the JIT's: codegen/emit_interval_program.h)
 // as its caller calls it: enclosures over a box of the varying globals,
 // one interval per input plane, into one per output plane.
 using IntervalProgramFunction = void (*)(const float* params, const float* uniform_globals,
                                          const lanes::Interval* box_planes, lanes::Interval* output_planes);
 
+// The uniform globals of a binding.
 struct UniformInputs {
   float values[uniform_value_count] = {};
 
