@@ -20,10 +20,13 @@
 
 #include "ir/shade_ir.h"
 #include "nodes/globals.h"
-#include "nodes/lane_interval.h"
 #include "nodes/output_contract.h"
 
 namespace shadetree {
+
+namespace lanes {
+struct Interval;  // nodes/lane_interval.h
+}  // namespace lanes
 
 // The varying inputs of a run: one plane per component of each varying
 // global, in the globals table's order (null where the program does not
