@@ -15,14 +15,14 @@ int main(int argc, char** argv) {
   }
   const float half = strtof(argv[2], NULL);
   const int cells = argc > 3 ? atoi(argv[3]) : 16;
-  if (!(half > 0.0f) || cells < 1 || cells > 256) {
-    fprintf(stderr, "error: HALF must be above 0 and CELLS from 1 to 256\n");
+  if (!(half > 0.0f) || !isfinite(half) || cells < 1 || cells > 256) {
+    fprintf(stderr, "error: HALF must be a finite number above 0 and CELLS from 1 to 256\n");
     return 2;
   }
   shadetree_graph* graph = NULL;
   shadetree_status status = shadetree_load(argv[1], SHADETREE_JIT, &graph);
   if (status != SHADETREE_OK) {
-    fprintf(stderr, "error: %s\n", shadetree_last_error());
+    fprintf(stderr, "%s\n", shadetree_last_error()); /* "error: ..." already */
     return (int)status;
   }
   const int density = shadetree_output_plane(graph, "density", 0);
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   if (status == SHADETREE_OK)
     printf("%ld of %d boxes of [-%g, %g]^3 certainly empty\n", empty, cells * cells * cells, half, half);
   else
-    fprintf(stderr, "error: %s\n", shadetree_last_error());
+    fprintf(stderr, "%s\n", shadetree_last_error()); /* "error: ..." already */
   free(lo);
   free(hi);
   free(out_lo);

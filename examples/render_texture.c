@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   float* rgba = malloc(sizeof(float) * 4 * (size_t)(size > 0 ? size : 1) * (size_t)(size > 0 ? size : 1));
   if (status == SHADETREE_OK) status = shadetree_render_texture(graph, size, size, 0.0f, rgba);
   if (status == SHADETREE_OK) status = shadetree_write_image(argv[2], rgba, size, size, 4);
-  if (status != SHADETREE_OK) fprintf(stderr, "error: %s\n", shadetree_last_error());
+  if (status != SHADETREE_OK) fprintf(stderr, "%s\n", shadetree_last_error()); /* "error: ..." already */
   free(rgba);
   shadetree_free(graph);
   return (int)status;
