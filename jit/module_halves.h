@@ -2,8 +2,9 @@
 //
 // After the middle end, two thirds of a large kernel's cold compile is the
 // back end (instruction selection, its DAG combiner most, and register
-// allocation), and LLVM runs it on one thread. So about half of a large
-// module's instructions become a function of their own (LLVM's
+// allocation), and LLVM runs it on one thread. So the instructions of
+// about half a large module's code generation (a shuffle counting twice)
+// become a function of their own (LLVM's
 // CodeExtractor: the values they read come in as arguments, those they
 // leave go out through pointers), which moves to a second module that
 // another thread compiles in an LLVM context of its own. That half is a
