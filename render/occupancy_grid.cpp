@@ -27,13 +27,31 @@ Status for_each_brick(int threads, const std::atomic<bool>* cancel, const std::f
 
 }  // namespace
 
-void OccupancyGrid::set_cells(const glm::ivec3& brick, std::uint8_t state) {
-  for (int k = 0; k < cells_per_brick_side; ++k)
-    for (int j = 0; j < cells_per_brick_side; ++j)
-      for (int i = 0; i < cells_per_brick_side; ++i) {
-        const glm::ivec3 cell = brick * cells_per_brick_side + glm::ivec3(i, j, k);
+void OccupancyGrid::set_cells(const glm::ivec3& first, int side, std::uint8_t state) {
+  for (int k = 0; k < side; ++k)
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const glm::ivec3 cell = first + glm::ivec3(i, j, k);
         cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = state;
       }
+}
+
+bool OccupancyGrid::refine_octants(const BoxOccupancy& occupied, const glm::ivec3& first, int side) {
+  const int half = side / 2;
+  bool any = false;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const glm::ivec3 octant = first + half * glm::ivec3(i, j, k);
+        const glm::vec3 octant_lo = lo_ + glm::vec3(octant) * cell_size_;
+        const BoxContents contents = occupied(octant_lo, octant_lo + static_cast<float>(half) * cell_size_);
+        if (contents == BoxContents::some && half > 1)
+          any = refine_octants(occupied, octant, half) || any;
+        else
+          set_cells(octant, half, contents != BoxContents::empty);
+        any = any || contents != BoxContents::empty;
+      }
+  return any;
 }
 
 Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, const glm::vec3& hi,
@@ -44,14 +62,16 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
   grid.hi_ = hi;
   grid.cell_size_ = (hi - lo) / static_cast<float>(cells_per_side);
   grid.cells_per_unit_ = 1.0f / grid.cell_size_;
-  grid.bricks_.assign(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, 1);
+  grid.bricks_.assign(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, some_brick);
   grid.cells_.assign(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1);
   const glm::vec3 brick_size = grid.cell_size_ * static_cast<float>(cells_per_brick_side);
   const auto classify = [&](const glm::ivec3& brick) {
     const glm::vec3 brick_lo = lo + glm::vec3(brick) * brick_size;
-    if (occupied(brick_lo, brick_lo + brick_size)) return;
-    grid.brick_state(brick) = 0;
-    grid.set_cells(brick, 0);
+    const BoxContents contents = occupied(brick_lo, brick_lo + brick_size);
+    if (contents == BoxContents::full) grid.brick_state(brick) = full_brick;
+    if (contents != BoxContents::empty) return;
+    grid.brick_state(brick) = empty_brick;
+    grid.set_cells(brick * cells_per_brick_side, cells_per_brick_side, 0);
   };
   // First a survey of one brick in eight: where it finds far less empty
   // space than is needed, the rest are not bounded (the fireball, which
@@ -64,7 +84,7 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
   long surveyed_empty = 0;
   for (int z = 0; z < bricks_per_side; z += 2)
     for (int y = 0; y < bricks_per_side; y += 2)
-      for (int x = 0; x < bricks_per_side; x += 2) surveyed_empty += grid.brick_state({x, y, z}) == 0;
+      for (int x = 0; x < bricks_per_side; x += 2) surveyed_empty += grid.brick_state({x, y, z}) == empty_brick;
   // On the gallery's 21 volumes the survey's empty fraction was within 1%
   // of the whole level's.
   constexpr double survey_margin = 0.03;
@@ -74,7 +94,7 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
     if (!surveyed(brick)) classify(brick);
   });
   if (!first) return first.error();
-  const auto empty = static_cast<double>(std::count(grid.bricks_.begin(), grid.bricks_.end(), 0));
+  const auto empty = static_cast<double>(std::count(grid.bricks_.begin(), grid.bricks_.end(), empty_brick));
   if (empty < least_empty * static_cast<double>(grid.bricks_.size())) return std::optional<OccupancyGrid>();
   return std::optional<OccupancyGrid>(std::move(grid));
 }
@@ -83,18 +103,8 @@ Status OccupancyGrid::refine(const BoxOccupancy& occupied, bool surveyed_bricks,
                              const std::atomic<bool>* cancel) {
   return for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
     std::uint8_t& state = brick_state(brick);
-    if (state == 0 || surveyed(brick) != surveyed_bricks) return;
-    bool any = false;
-    for (int k = 0; k < cells_per_brick_side; ++k)
-      for (int j = 0; j < cells_per_brick_side; ++j)
-        for (int i = 0; i < cells_per_brick_side; ++i) {
-          const glm::ivec3 cell = brick * cells_per_brick_side + glm::ivec3(i, j, k);
-          const glm::vec3 cell_lo = lo_ + glm::vec3(cell) * cell_size_;
-          const bool holds = occupied(cell_lo, cell_lo + cell_size_);
-          cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] = holds;
-          any = any || holds;
-        }
-    state = any ? 1 : 0;
+    if (state != some_brick || surveyed(brick) != surveyed_bricks) return;
+    state = refine_octants(occupied, brick * cells_per_brick_side, cells_per_brick_side) ? some_brick : empty_brick;
   });
 }
 
@@ -175,7 +185,7 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // (the ray then samples).
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
     const glm::ivec3 brick = cell / cells_per_brick_side;
-    const bool brick_empty = bricks_[brick_index(brick)] == 0;
+    const bool brick_empty = bricks_[brick_index(brick)] == empty_brick;
     const glm::ivec3 box_first = brick * cells_per_brick_side;
     const auto [exit, axis] = brick_empty ? exit_of(box_first, cells_per_brick_side, origin, inverse) : leaving();
     if (!(exit < end)) return {end, end};
@@ -204,7 +214,7 @@ long OccupancyGrid::occupied_bricks(bool surveyed_bricks) const {
   for (int z = 0; z < bricks_per_side; ++z)
     for (int y = 0; y < bricks_per_side; ++y)
       for (int x = 0; x < bricks_per_side; ++x)
-        count += surveyed({x, y, z}) == surveyed_bricks && bricks_[brick_index({x, y, z})] != 0;
+        count += surveyed({x, y, z}) == surveyed_bricks && bricks_[brick_index({x, y, z})] != empty_brick;
   return count;
 }
 

@@ -7,9 +7,12 @@
 // its media); a brick is empty when the density graph's interval
 // enclosure over the brick's box (interp/interval_program.h) says its
 // opacity is 0 everywhere in it. Bricks whose enclosure is too loose to
-// tell are cut again, 4 x 4 x 4, as Keeter's MPR subdivides its tiles, so
-// that the surface of a solid keeps thin occupied shells around it and
-// the space away from it is empty in large steps.
+// tell are cut again into 4 x 4 x 4 cells, as Keeter's MPR subdivides its
+// tiles, so that the surface of a solid keeps thin occupied shells around
+// it and the space away from it is empty in large steps. A brick's cells
+// are bounded by octants (2 x 2 x 2 cells, then each cell of an octant
+// that cannot tell): where a thin shell crosses a brick, most of its
+// octants are empty, and each is one enclosure instead of eight.
 //
 // A sample is skipped only where its opacity is certainly 0, and such a
 // sample adds nothing to a ray: skipping changes no pixel.
@@ -28,9 +31,13 @@
 
 namespace shadetree {
 
-// Whether the volume may be visible anywhere in the box [lo, hi]: false
-// only where it certainly is not. Called from worker threads.
-using BoxOccupancy = std::function<bool(const glm::vec3& lo, const glm::vec3& hi)>;
+// What the box [lo, hi] holds of the volume: certainly nothing visible;
+// maybe something; or certainly something visible at every point, when
+// its parts are not worth bounding one by one.
+enum class BoxContents { empty, some, full };
+
+// The contents of a box. Called from worker threads.
+using BoxOccupancy = std::function<BoxContents(const glm::vec3& lo, const glm::vec3& hi)>;
 
 // Where a ray may meet something visible (`from`), and where it leaves the
 // occupied cell it meets there (`until`): the ray need not ask again
@@ -44,10 +51,11 @@ class OccupancyGrid {
   static constexpr int bricks_per_side = 16;     // the first level
   static constexpr int cells_per_brick_side = 4;  // the second, where the first cannot tell
   static constexpr int cells_per_side = bricks_per_side * cells_per_brick_side;
+  static_assert((cells_per_brick_side & (cells_per_brick_side - 1)) == 0, "a brick's cells are bounded by octants");
   // Occupied cells walked ahead at most when a ray asks from inside one.
   static constexpr int max_occupied_run = 16;
 
-  // The first level, every cell of an occupied brick occupied; none when
+  // The first level, every cell of a brick that is not empty occupied; none when
   // it finds less than `least_empty` of the bounds empty: stepping through
   // the cells would then cost more than the samples it saves
   // (docs/architecture.md has the measurements).
@@ -60,11 +68,11 @@ class OccupancyGrid {
   // worth bounding.
   static bool surveyed(const glm::ivec3& brick) { return brick.x % 2 == 0 && brick.y % 2 == 0 && brick.z % 2 == 0; }
 
-  // The second level: the cells of each occupied brick (of those
-  // `surveyed`, or of the others) bounded one by one.
+  // The second level: the cells of each brick that is neither empty nor
+  // full (of those `surveyed`, or of the others), bounded by octants.
   Status refine(const BoxOccupancy& occupied, bool surveyed, int threads, const std::atomic<bool>* cancel);
 
-  // How many bricks of the survey, or of the others, are occupied.
+  // How many bricks of the survey, or of the others, are not empty.
   long occupied_bricks(bool surveyed) const;
   // The empty share of the surveyed bricks' volume.
   double surveyed_empty_fraction() const;
@@ -88,7 +96,13 @@ class OccupancyGrid {
     return (static_cast<std::size_t>(brick.z) * bricks_per_side + brick.y) * bricks_per_side + brick.x;
   }
   std::uint8_t& brick_state(const glm::ivec3& brick) { return bricks_[brick_index(brick)]; }
-  void set_cells(const glm::ivec3& brick, std::uint8_t state);
+  // Every cell of the cube of `side` cells a side from cell `first`.
+  void set_cells(const glm::ivec3& first, int side, std::uint8_t state);
+  // Bounds the eight octants of the cube of `side` cells from `first`
+  // (whose own contents are `some`), and the octants of each octant that
+  // holds some in turn, down to single cells: whether any cell may hold
+  // something visible.
+  bool refine_octants(const BoxOccupancy& occupied, const glm::ivec3& first, int side);
   bool inside(const glm::vec3& point) const;
   bool cell_occupied(const glm::ivec3& cell) const {
     return cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] != 0;
@@ -103,7 +117,9 @@ class OccupancyGrid {
   Exit exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin, const glm::vec3& inverse_direction) const;
 
   glm::vec3 lo_{0.0f}, hi_{0.0f}, cell_size_{1.0f}, cells_per_unit_{1.0f};
-  std::vector<std::uint8_t> bricks_;  // per brick: 0 empty, 1 occupied (its cells say where)
+  // Brick states.
+  static constexpr std::uint8_t empty_brick = 0, some_brick = 1, full_brick = 2;
+  std::vector<std::uint8_t> bricks_;  // per brick: empty, some (its cells say where) or full
   std::vector<std::uint8_t> cells_;   // per cell of the finest level: 0 empty, 1 occupied
 };
 

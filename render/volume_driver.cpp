@@ -910,8 +910,9 @@ struct EmptySpace {
 // Where the volume may be visible: boxes of P (with any direction I) over
 // which the graph's interval enclosure (interp/interval_program.h) of
 // its opacity, or density where it has none, is not certainly 0, or, where
-// the graph refracts, its index not certainly 1. The
-// second level is bounded only where skipping pays: where the kernel
+// the graph refracts, its index not certainly 1; full where that opacity
+// is certainly above 0. The second level is bounded only where skipping
+// pays: where the kernel
 // spends on empty space much of what it spends elsewhere, and where the
 // samples the second level would save this frame's `rays` (estimated from
 // its survey and the kernel's cost, timed here) cost more than bounding
@@ -950,11 +951,13 @@ Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, c
     }
     box.set(GlobalId::filter_width, {step, step});
     local.bound->evaluate(box, local.outputs.data());
+    const lanes::Interval seen_bound = local.outputs[static_cast<std::size_t>(plane)];
+    if (seen_bound.lo > 0.0f) return BoxContents::full;
     if (ior_plane >= 0) {
       const lanes::Interval ior = local.outputs[static_cast<std::size_t>(ior_plane)];
-      if (!(ior.lo == 1.0f && ior.hi == 1.0f)) return true;
+      if (!(ior.lo == 1.0f && ior.hi == 1.0f)) return BoxContents::some;
     }
-    return !(local.outputs[static_cast<std::size_t>(plane)].hi <= 0.0f);
+    return seen_bound.hi <= 0.0f ? BoxContents::empty : BoxContents::some;
   };
   const glm::vec3 lo(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]);
   const glm::vec3 hi(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]);

@@ -2,6 +2,7 @@
 // and rays stepping over the empty ones without passing an occupied one.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -14,11 +15,13 @@ namespace {
 
 constexpr float radius = 0.5f;
 
-// Boxes that meet the sphere of `radius` about the origin: an exact box
+// What a box holds of the ball of `radius` about the origin: an exact box
 // test, as tight as an interval bound can be.
-bool meets_sphere(const glm::vec3& lo, const glm::vec3& hi) {
+BoxContents meets_sphere(const glm::vec3& lo, const glm::vec3& hi) {
   const glm::vec3 nearest = glm::clamp(glm::vec3(0.0f), lo, hi);
-  return glm::length(nearest) <= radius;
+  const glm::vec3 farthest = glm::max(glm::abs(lo), glm::abs(hi));
+  if (glm::length(nearest) > radius) return BoxContents::empty;
+  return glm::length(farthest) <= radius ? BoxContents::full : BoxContents::some;
 }
 
 OccupancyGrid sphere_grid(bool refined = true) {
@@ -80,6 +83,53 @@ TEST(OccupancyGrid, TheSurveyedBricksTellTheSecondLevelsEmptyShare) {
   EXPECT_FALSE(grid.occupied(in_surveyed));
   EXPECT_TRUE(grid.occupied(in_other));
   EXPECT_FALSE(refined.occupied(in_other));
+}
+
+// The cells of a brick the sphere's surface crosses are bounded by
+// octants: each of its eight 2 x 2 x 2 octants once, and the eight cells
+// of an octant the surface crosses too, 16 enclosures where it crosses
+// one octant instead of 64. Inside the sphere nothing is bounded again: a
+// brick or an octant there is full. A box test that finds every box
+// inside an empty or full one empty or full alike (the sphere's) then
+// marks each cell as bounding it alone would.
+TEST(OccupancyGrid, ABricksCellsAreBoundedByOctants) {
+  const glm::vec3 lo(-1.0f), hi(1.0f);
+  Result<std::optional<OccupancyGrid>> built = OccupancyGrid::build(lo, hi, meets_sphere, 0.0, 2, nullptr);
+  ASSERT_TRUE(built.ok() && built->has_value());
+  OccupancyGrid& grid = **built;
+  constexpr int cells = OccupancyGrid::cells_per_side, brick_side = OccupancyGrid::cells_per_brick_side;
+  const glm::vec3 cell_size = (hi - lo) / static_cast<float>(cells);
+  auto contents = [&](const glm::ivec3& first, int side) {
+    const glm::vec3 box_lo = lo + glm::vec3(first) * cell_size;
+    return meets_sphere(box_lo, box_lo + static_cast<float>(side) * cell_size);
+  };
+  long expected = 0, full_bricks = 0;
+  for (int z = 0; z < cells; z += brick_side)
+    for (int y = 0; y < cells; y += brick_side)
+      for (int x = 0; x < cells; x += brick_side) {
+        const glm::ivec3 brick(x, y, z);
+        full_bricks += contents(brick, brick_side) == BoxContents::full;
+        if (contents(brick, brick_side) != BoxContents::some) continue;
+        for (int octant = 0; octant < 8; ++octant) {
+          const glm::ivec3 first = brick + (brick_side / 2) * glm::ivec3(octant & 1, (octant >> 1) & 1, octant >> 2);
+          expected += contents(first, brick_side / 2) == BoxContents::some ? 9 : 1;
+        }
+      }
+  EXPECT_GT(full_bricks, 100);  // of the sphere's 8 x 8 x 8 bricks about the centre
+  std::atomic<long> enclosures = 0;
+  const BoxOccupancy counted = [&](const glm::vec3& box_lo, const glm::vec3& box_hi) {
+    ++enclosures;
+    return meets_sphere(box_lo, box_hi);
+  };
+  for (bool surveyed : {true, false}) ASSERT_TRUE(grid.refine(counted, surveyed, 2, nullptr).ok());
+  EXPECT_EQ(enclosures.load(), expected);
+  for (int z = 0; z < cells; ++z)
+    for (int y = 0; y < cells; ++y)
+      for (int x = 0; x < cells; ++x) {
+        const glm::ivec3 cell(x, y, z);
+        ASSERT_EQ(grid.occupied(lo + (glm::vec3(cell) + 0.5f) * cell_size), contents(cell, 1) != BoxContents::empty)
+            << x << ", " << y << ", " << z;
+      }
 }
 
 // A ray through the cube stops before the sphere, and never past a point
@@ -148,7 +198,7 @@ TEST(OccupancyGrid, ARayInsideOccupiedCellsIsClearUntilItLeavesThem) {
 // An enclosure that knows nothing leaves nothing empty; a grid that would
 // find too little empty is not built.
 TEST(OccupancyGrid, ABoundThatKnowsNothingSkipsNothing) {
-  const BoxOccupancy everywhere = [](const glm::vec3&, const glm::vec3&) { return true; };
+  const BoxOccupancy everywhere = [](const glm::vec3&, const glm::vec3&) { return BoxContents::some; };
   Result<std::optional<OccupancyGrid>> grid =
       OccupancyGrid::build(glm::vec3(0.0f), glm::vec3(1.0f), everywhere, 0.0, 1, nullptr);
   ASSERT_TRUE(grid.ok() && grid->has_value());
