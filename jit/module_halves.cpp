@@ -38,7 +38,9 @@ unsigned instruction_count(const llvm::Module& module) {
 // one, and a noise's knot rows are transposed by chains of three: the
 // fireball's octave block, cut into halves of equal counts, gave the half
 // with its row loads and transposes (288 shuffles of 1117 instructions)
-// 31 ms of code generation and the rest (1028) 13 ms.
+// 31 ms of code generation and the rest (1028) 13 ms; a shuffle counted
+// twice, 21-23 ms each. Counted three times or more, looping_turbulence's
+// rest became the longer part (docs/architecture.md).
 constexpr unsigned shuffle_cost = 2;
 
 unsigned generation_cost(const llvm::Instruction& instr) {

@@ -12,7 +12,9 @@
 // it and the space away from it is empty in large steps. A brick's cells
 // are bounded by octants (2 x 2 x 2 cells, then each cell of an octant
 // that cannot tell): where a thin shell crosses a brick, most of its
-// octants are empty, and each is one enclosure instead of eight.
+// octants are empty, and each is one enclosure instead of eight. A box
+// whose opacity is certainly above 0 is full, and is not cut: marking a
+// cell occupied costs samples, never a pixel.
 //
 // A sample is skipped only where its opacity is certainly 0, and such a
 // sample adds nothing to a ray: skipping changes no pixel.
@@ -55,10 +57,10 @@ class OccupancyGrid {
   // Occupied cells walked ahead at most when a ray asks from inside one.
   static constexpr int max_occupied_run = 16;
 
-  // The first level, every cell of a brick that is not empty occupied; none when
-  // it finds less than `least_empty` of the bounds empty: stepping through
-  // the cells would then cost more than the samples it saves
-  // (docs/architecture.md has the measurements).
+  // The first level, every cell of a brick that is not empty occupied;
+  // none when it finds less than `least_empty` of the bounds empty:
+  // stepping through the cells would then cost more than the samples it
+  // saves (docs/architecture.md has the measurements).
   static Result<std::optional<OccupancyGrid>> build(const glm::vec3& lo, const glm::vec3& hi,
                                                     const BoxOccupancy& occupied, double least_empty, int threads,
                                                     const std::atomic<bool>* cancel);
@@ -117,7 +119,7 @@ class OccupancyGrid {
   Exit exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin, const glm::vec3& inverse_direction) const;
 
   glm::vec3 lo_{0.0f}, hi_{0.0f}, cell_size_{1.0f}, cells_per_unit_{1.0f};
-  // Brick states.
+  // What a brick holds (BoxContents), as it is kept.
   static constexpr std::uint8_t empty_brick = 0, some_brick = 1, full_brick = 2;
   std::vector<std::uint8_t> bricks_;  // per brick: empty, some (its cells say where) or full
   std::vector<std::uint8_t> cells_;   // per cell of the finest level: 0 empty, 1 occupied

@@ -912,11 +912,10 @@ struct EmptySpace {
 // its opacity, or density where it has none, is not certainly 0, or, where
 // the graph refracts, its index not certainly 1; full where that opacity
 // is certainly above 0. The second level is bounded only where skipping
-// pays: where the kernel
-// spends on empty space much of what it spends elsewhere, and where the
-// samples the second level would save this frame's `rays` (estimated from
-// its survey and the kernel's cost, timed here) cost more than bounding
-// the rest of it.
+// pays: where the kernel spends on empty space much of what it spends
+// elsewhere, and where the samples the second level would save this
+// frame's `rays` (estimated from its survey and the kernel's cost, timed
+// here) cost more than bounding the rest of it.
 Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, const std::vector<float>& params,
                                      const VolumeDesc& volume, float frame, float step, long rays,
                                      const VolumeRenderOptions& options) {
