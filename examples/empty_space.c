@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   }
   const int width = shadetree_input_plane("filter_width", 0);
   lo[width] = hi[width] = 0.0f;
+  const int p[3] = {shadetree_input_plane("P", 0), shadetree_input_plane("P", 1), shadetree_input_plane("P", 2)};
   const float side = 2.0f * half / (float)cells;
   long empty = 0;
   for (int z = 0; z < cells && status == SHADETREE_OK; ++z)
@@ -50,9 +51,8 @@ int main(int argc, char** argv) {
       for (int x = 0; x < cells && status == SHADETREE_OK; ++x) {
         const int corner[3] = {x, y, z};
         for (int c = 0; c < 3; ++c) {
-          const int plane = shadetree_input_plane("P", c);
-          lo[plane] = -half + side * (float)corner[c];
-          hi[plane] = lo[plane] + side;
+          lo[p[c]] = -half + side * (float)corner[c];
+          hi[p[c]] = lo[p[c]] + side;
         }
         status = shadetree_bound(graph, 0.0f, lo, hi, out_lo, out_hi);
         empty += status == SHADETREE_OK && out_hi[density] <= 0.0f;
