@@ -7,6 +7,8 @@
 #include <llvm/Support/raw_ostream.h>
 #include <llvm/Target/TargetMachine.h>
 
+#include "jit/lane_index_chains.h"
+
 namespace shadetree {
 
 llvm::CodeGenOptLevel code_generation_level(Optimization optimization) {
@@ -77,6 +79,10 @@ void optimize_for(llvm::Module& module, llvm::TargetMachine& machine, Optimizati
     function.addFnAttr("target-features", machine.getTargetFeatureString());
   }
   optimize_module(module, machine, optimization);
+  // Last: InstCombine moves a lane out of a vector operation only where
+  // nothing else reads the operation, so these chains are still vectors.
+  for (llvm::Function& function : module)
+    if (!function.isDeclaration()) index_lanes_in_general_registers(function);
 }
 
 Result<std::string> assembly(llvm::Module& module, llvm::TargetMachine& machine) {
