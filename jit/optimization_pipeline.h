@@ -2,7 +2,8 @@
 // and machine code, by JitSettings::optimization: the full pipeline (O3's
 // effect on a kernel in half its time) and LLVM's optimizing code
 // generator, or the quick one (the library inlined and cleaned up, the
-// fast code generator).
+// fast code generator); after either, chained per-lane lookups are
+// indexed in general registers (jit/lane_index_chains.h).
 #pragma once
 
 #include <memory>
