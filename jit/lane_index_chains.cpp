@@ -47,7 +47,7 @@ llvm::Value* scalar_lane(llvm::Value* value, unsigned lane, llvm::IRBuilder<>& b
 
 }  // namespace
 
-int index_lanes_in_general_registers(llvm::Function& function) {
+void index_lanes_in_general_registers(llvm::Function& function) {
   std::vector<llvm::ExtractElementInst*> extracts;
   for (llvm::BasicBlock& block : function)
     for (llvm::Instruction& instr : block)
@@ -58,7 +58,6 @@ int index_lanes_in_general_registers(llvm::Function& function) {
   // The vectors read are deleted once every lane is rewritten, if nothing
   // else reads them (the lookups' results usually are: they become floats).
   std::vector<llvm::WeakTrackingVH> read;
-  int rewritten = 0;
   for (llvm::ExtractElementInst* extract : extracts) {
     const auto* vector_type = llvm::dyn_cast<llvm::FixedVectorType>(extract->getVectorOperandType());
     const std::uint64_t lane = llvm::cast<llvm::ConstantInt>(extract->getIndexOperand())->getZExtValue();
@@ -70,11 +69,9 @@ int index_lanes_in_general_registers(llvm::Function& function) {
     read.emplace_back(extract->getVectorOperand());
     extract->replaceAllUsesWith(scalar);
     extract->eraseFromParent();
-    ++rewritten;
   }
   for (llvm::WeakTrackingVH& vector : read)
     if (vector) llvm::RecursivelyDeleteTriviallyDeadInstructions(vector);
-  return rewritten;
 }
 
 }  // namespace shadetree

@@ -22,7 +22,7 @@ namespace shadetree {
 // Rewrites every element extracted at a constant lane from an integer
 // vector operation whose operands' lanes are known as scalars (inserted
 // elements, constants, or such operations, a few levels deep) as the
-// scalar operation on those lanes. Returns how many were rewritten.
-int index_lanes_in_general_registers(llvm::Function& function);
+// scalar operation on those lanes.
+void index_lanes_in_general_registers(llvm::Function& function);
 
 }  // namespace shadetree
