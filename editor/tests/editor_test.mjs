@@ -181,7 +181,7 @@ try {
       });
     return readFileSync(join(folder, path), "utf8");
   };
-  const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 5000 });
+  const settled = () => page.waitForFunction(() => !window.shadetreeEditor.history.take, { timeout: 20000 });
   const paramsOf = () => page.evaluate(() => window.shadetreeEditor.documentFromCanvas().params);
   const before = await previewPixels();
   assert.equal(await page.evaluate(() => window.shadetreeEditor.graph._nodes.length > 5), true, "the graph's nodes are on the canvas");
@@ -240,7 +240,7 @@ try {
   await page.mouse.down();
   for (let step = 1; step <= 6; ++step) await page.mouse.move(grip[0] + step * 10, grip[1] + step * 6);
   await page.mouse.up();
-  await page.waitForFunction((n) => window.shadetreeEditor.history.index > n, { timeout: 5000 }, stepBefore);
+  await page.waitForFunction((n) => window.shadetreeEditor.history.index > n, { timeout: 20000 }, stepBefore);
   const turbMoved = await positionOf("turb");
   assert.notDeepEqual(turbMoved, turbBefore, "the drag moved turb");
   await pressKeys("Control", "z");
@@ -289,7 +289,7 @@ try {
   await page.click('input[name="turbulence_amount.name"]', { clickCount: 3 });
   await page.keyboard.type("stir");
   await page.keyboard.press("Tab");
-  await page.waitForSelector('input[name="stir"]', { timeout: 5000 });
+  await page.waitForSelector('input[name="stir"]', { timeout: 20000 });
   const renamed = await page.evaluate(() => window.shadetreeEditor.documentFromCanvas());
   assert.deepEqual(Object.keys(renamed.params), ["scale", "stir", "octaves"], "the renamed param keeps its place");
   assert.equal(renamed.nodes.find((n) => n.id === "stirred").in.b, "$stir");
@@ -300,19 +300,19 @@ try {
   await page.type('input[name="new-param-name"]', "gain");
   await page.select('select[name="new-param-type"]', "float");
   await page.click(".param-adder button");
-  await page.waitForSelector('input[name="gain"]', { timeout: 5000 });
+  await page.waitForSelector('input[name="gain"]', { timeout: 20000 });
   assert.deepEqual((await paramsOf()).gain, { type: "float", default: 0.5, min: 0, max: 1 });
   assert.ok(await page.evaluate(() => window.shadetreeEditor.graphView.boundaryView("sources").findOutputSlot("gain") >= 0),
             "the canvas's params node has gain");
   await settled();
   await page.click('button[title="edit param gain"]');
   await page.click('button[title="delete param gain"]');
-  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 5000 });
+  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 20000 });
   assert.equal((await paramsOf()).gain, undefined);
   await pressKeys("Control", "z");
-  await page.waitForSelector('input[name="gain"]', { timeout: 5000 });
+  await page.waitForSelector('input[name="gain"]', { timeout: 20000 });
   await pressKeys("Control", "Shift", "z");
-  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 5000 });
+  await page.waitForFunction(() => !document.querySelector('input[name="gain"]'), { timeout: 20000 });
   await page.click('button[title="edit param scale"]');
   await page.click('button[title="delete param scale"]');
   const refusal = await page.$eval('input[name="scale.name"]', (field) => field.closest(".param").querySelector(".param-message").textContent);
@@ -398,7 +398,7 @@ try {
   console.log("marble_color: added input gain, retyped it, refused deleting s, deleted gain");
   const title = await titlePoint("ramp");
   await page.mouse.click(title[0], title[1]);
-  await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
+  await page.waitForSelector(".curve-editor canvas", { timeout: 20000 });
   const knotsBefore = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
   // Thumbnails come after the preview that the input edits started (so
   // none may be pending yet): wait for this one.
@@ -420,7 +420,7 @@ try {
   await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n, { timeout: serverWait }, previewsBeforeDrag);
   const knotsDragged = await page.evaluate(() => JSON.stringify(window.shadetreeEditor.documentFromCanvas().functions.marble_color.nodes.find((n) => n.id === "ramp").knots));
   assert.notEqual(knotsDragged, knotsBefore, "the drag moved a knot");
-  await page.waitForFunction(() => window.shadetreeEditor.history.canUndo && !window.shadetreeEditor.history.take, { timeout: 5000 });
+  await page.waitForFunction(() => window.shadetreeEditor.history.canUndo && !window.shadetreeEditor.history.take, { timeout: 20000 });
   await page.waitForFunction((sum) => window.shadetreeEditor.state.previews > 0 && window.previewChecksum() !== sum, { timeout: serverWait }, beforeDrag);
   console.log(`dragged spline knot 3 of marble_color.ramp: preview changed`);
 
@@ -464,11 +464,11 @@ try {
     await page.keyboard.press("Enter");
   };
   await saveAs("marble");
-  await page.waitForFunction(() => document.getElementById("status").classList.contains("error"), { timeout: 5000 });
+  await page.waitForFunction(() => document.getElementById("status").classList.contains("error"), { timeout: 20000 });
   assert.match(await page.evaluate(() => document.getElementById("status").textContent), /exists/);
   await page.click("#save-as-cancel");
   await saveAs("marble_variant");
-  await page.waitForFunction(() => window.shadetreeEditor.state.path === "marble_variant.json", { timeout: 5000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "marble_variant.json", { timeout: 20000 });
   assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "marble_variant.json");
   const variant = spawnSync(binary, ["check", join(folder, "marble_variant.json")], { encoding: "utf8" });
   assert.equal(variant.status, 0, variant.stderr);
@@ -601,7 +601,7 @@ try {
   for (const [name, bytes] of [["broken.json", "{\"format\": "], ["not_a_graph.json", notAGraph]]) {
     await page.select("#graph-list", `wrong/${name}`);
     await page.waitForFunction((name) => document.getElementById("status").textContent.includes(`${name} is not a graph file`),
-                               { timeout: 5000 }, name);
+                               { timeout: 20000 }, name);
     assert.equal(await page.evaluate(() => window.shadetreeEditor.state.path), "fireball.json", "the open graph stays open");
     assert.equal(await page.evaluate(() => document.getElementById("graph-list").value), "fireball.json");
     const refusal = await page.evaluate(() => document.getElementById("status").textContent);
@@ -637,7 +637,7 @@ try {
   let asked = answer(false);
   await pressKeys("Control", "s");
   assert.match(await asked, /fireball\.json changed on disk since it was opened here/);
-  await page.waitForFunction(() => window.statusesShown.some((text) => text.startsWith("not saved")), { timeout: 5000 });
+  await page.waitForFunction(() => window.statusesShown.some((text) => text.startsWith("not saved")), { timeout: 20000 });
   assert.equal(readFileSync(join(folder, "fireball.json"), "utf8"), elsewhere, "declined: the other program's text stays");
   asked = answer(true);
   const overwritten = await saveWithKeys("fireball.json");
@@ -677,7 +677,7 @@ try {
   // Constants on unwired inputs, in the node panel: ball's radius (1.05
   // in the file) and its center (not in the file: the op's default, 0).
   await page.evaluate(() => window.shadetreeEditor.canvas.selectNode(window.shadetreeEditor.viewOf("ball")));
-  await page.waitForSelector('input[name="ball.radius"]', { timeout: 5000 });
+  await page.waitForSelector('input[name="ball.radius"]', { timeout: 20000 });
   assert.equal(await page.$eval('input[name="ball.radius"]', (field) => field.value), "1.05");
   assert.equal(await page.$('input[name="ball.p"]'), null, "a wired input has no field");
   assert.equal(await page.$eval('input[name="ball.center.1"]', (field) => `${field.value}|${field.placeholder}`), "|0");
@@ -724,7 +724,7 @@ try {
     return { param: window.shadetreeEditor.state.doc.params.ball_radius, radius: doc.nodes.find((n) => n.id === "ball").in.radius };
   });
   assert.deepEqual(promoted, { param: { type: "float", default: 1.2, min: 0, max: 2.4 }, radius: "$ball_radius" });
-  await page.waitForSelector('#params input[name="ball_radius"]', { timeout: 5000 });
+  await page.waitForSelector('#params input[name="ball_radius"]', { timeout: 20000 });
   assert.equal(await page.$('input[name="ball.radius"]'), null, "the input reads the param: no constant field");
   await page.waitForFunction((n) => window.shadetreeEditor.state.previews > n && window.shadetreeEditor.state.errors.length === 0,
                              { timeout: serverWait }, beforePromotion);
@@ -749,7 +749,7 @@ try {
   await page.evaluate(() => window.shadetreeEditor.open("spline_probe.json"));
   const curveTitle = await titlePoint("curve");
   await page.mouse.click(curveTitle[0], curveTitle[1]);
-  await page.waitForSelector(".curve-editor canvas", { timeout: 5000 });
+  await page.waitForSelector(".curve-editor canvas", { timeout: 20000 });
   for (const basis of ["catmull-rom", "linear"]) {
     await page.select(".curve-editor select", basis);
     const { drawn, doc } = await page.evaluate(() => {
@@ -828,9 +828,9 @@ try {
   const library = await (await request("/api/nodes")).json();
   const hoverText = async ([x, y]) => {
     await page.mouse.move(x - 30, y - 30);
-    await page.waitForSelector("#hover-doc", { hidden: true, timeout: 5000 });
+    await page.waitForSelector("#hover-doc", { hidden: true, timeout: 20000 });
     await page.mouse.move(x, y);
-    await page.waitForSelector("#hover-doc:not([hidden])", { timeout: 5000 });
+    await page.waitForSelector("#hover-doc:not([hidden])", { timeout: 20000 });
     return page.$eval("#hover-doc", (tip) => [tip.querySelector("strong").textContent, tip.querySelector("span").textContent]);
   };
   const inputPoint = (id, name) => page.evaluate((id, name) => {
@@ -883,7 +883,7 @@ try {
   await page.evaluate(() => { window.shadetreeEditor.state.latencies = []; });
   // The empty graph's check answers, above the fields, before they are clicked.
   await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes('"outputs" must be a non-empty object'),
-                             { timeout: 5000 });
+                             { timeout: 20000 });
   await page.click('input[name="graph name"]', { clickCount: 3 });
   await page.keyboard.type("from_nothing");
   await page.type('textarea[name="graph doc"]', "turbulence, made in the editor");
@@ -928,10 +928,10 @@ try {
   // density), and back to a texture they go again.
   await page.mouse.click(host.x + 20, host.y + host.height - 20);  // no node selected: the graph's fields
   await page.select('select[name="graph kind"]', "volume");
-  await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes("density"), { timeout: 5000 });
+  await page.waitForFunction(() => document.getElementById("diagnostic").textContent.includes("density"), { timeout: 20000 });
   assert.deepEqual((await newDoc()).render?.volume?.bounds, { min: [-1, -1, -1], max: [1, 1, 1] }, "a volume gets bounds");
   await page.select('select[name="graph kind"]', "texture");
-  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 5000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.errors.length === 0, { timeout: 20000 });
   assert.equal((await newDoc()).render, undefined, "a texture keeps no volume");
   // Ctrl+drag draws a box: the nodes in it are selected.
   const [pTitle, turbulenceTitleBefore] = [await titlePoint("P1"), await titlePoint("turbulence1")];
@@ -987,7 +987,7 @@ try {
   await page.click("#save-as-name", { clickCount: 3 });
   await page.keyboard.type("from_nothing");
   await page.keyboard.press("Enter");
-  await page.waitForFunction(() => window.shadetreeEditor.state.path === "from_nothing.json", { timeout: 5000 });
+  await page.waitForFunction(() => window.shadetreeEditor.state.path === "from_nothing.json", { timeout: 20000 });
   const made = spawnSync(binary, ["check", join(folder, "from_nothing.json")], { encoding: "utf8" });
   assert.equal(made.status, 0, made.stderr);
   const madeDoc = JSON.parse(readFileSync(join(folder, "from_nothing.json"), "utf8"));
@@ -1113,7 +1113,7 @@ try {
     canvas.ds.scale = 1;
     graphView.centreOn([(x0 + x1) / 2, (y0 + y1) / 2]);
   });
-  await page.waitForSelector("#minimap:not([hidden])", { timeout: 5000 });
+  await page.waitForSelector("#minimap:not([hidden])", { timeout: 20000 });
   const map = await page.$eval("#minimap", (element) => { const box = element.getBoundingClientRect(); return [box.left, box.top]; });
   await page.mouse.click(map[0] + 3, map[1] + 3);
   await drawn();
