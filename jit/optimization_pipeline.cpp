@@ -8,6 +8,7 @@
 #include <llvm/Target/TargetMachine.h>
 
 #include "jit/lane_index_chains.h"
+#include "jit/library_inliner.h"
 
 namespace shadetree {
 
@@ -17,14 +18,17 @@ llvm::CodeGenOptLevel code_generation_level(Optimization optimization) {
 
 namespace {
 
-// The quick pipeline: the library inlined (it was optimized when it was
-// built), then only what makes the inlined code straight again.
-constexpr const char* quick_pipeline = "always-inline,globaldce,function(sroa,early-cse,simplifycfg,adce)";
+// Both pipelines run on the kernel with the op library inlined
+// (jit/library_inliner.h).
+//
+// The quick pipeline: only what makes the inlined code straight again
+// (the library was optimized when it was built).
+constexpr const char* quick_pipeline = "globaldce,function(sroa,early-cse,simplifycfg,adce)";
 
 // The full pipeline: what O3 does that changes a kernel, in half of O3's
 // time (O3's second inliner, loop unrolling and vectorizers find little in
 // a body of vector code whose library was optimized when it was built).
-// After inlining: constants into outlined ops (IPSCCP) and their pointer
+// Constants into outlined ops (IPSCCP) and their pointer
 // arguments made values (argument promotion), before the function passes
 // fold what that exposes in the kernel; then arguments passed through
 // memory made registers (SROA), repeated and constant work removed
@@ -37,12 +41,13 @@ constexpr const char* quick_pipeline = "always-inline,globaldce,function(sroa,ea
 // per load against the hundreds of table reads before it) found nothing
 // more on any gallery kernel while costing a third of the middle end.
 constexpr const char* full_pipeline =
-    "always-inline,ipsccp,globalopt,cgscc(function-attrs,argpromotion),"
+    "ipsccp,globalopt,cgscc(function-attrs,argpromotion),"
     "function(sroa,early-cse<memssa>,instcombine<no-verify-fixpoint;max-iterations=1>,simplifycfg,"
     "loop-mssa(licm),gvn<no-memdep>,adce,simplifycfg),"
     "deadargelim,constmerge,globaldce";
 
 void optimize_module(llvm::Module& module, llvm::TargetMachine& machine, Optimization optimization) {
+  inline_library_calls(module);
   llvm::LoopAnalysisManager loops;
   llvm::FunctionAnalysisManager functions;
   llvm::CGSCCAnalysisManager cgscc;

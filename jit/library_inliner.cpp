@@ -1,0 +1,53 @@
+#include "jit/library_inliner.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <llvm/IR/InstIterator.h>
+#include <llvm/IR/Instructions.h>
+#include <llvm/IR/Module.h>
+#include <llvm/Transforms/Utils/Cloning.h>
+
+namespace shadetree {
+
+namespace {
+
+bool inlinable(const llvm::CallBase& call) {
+  const llvm::Function* callee = call.getCalledFunction();
+  return callee && !callee->isDeclaration() && callee->hasFnAttribute(llvm::Attribute::AlwaysInline);
+}
+
+}  // namespace
+
+void inline_library_calls(llvm::Module& module) {
+  std::vector<llvm::CallBase*> calls;
+  for (llvm::Function& function : module)
+    if (!function.hasFnAttribute(llvm::Attribute::AlwaysInline))
+      for (llvm::Instruction& instr : llvm::instructions(function))
+        if (auto* call = llvm::dyn_cast<llvm::CallBase>(&instr); call && inlinable(*call)) calls.push_back(call);
+  std::reverse(calls.begin(), calls.end());
+  // In the order of the calls; a body's own calls right after it, in
+  // theirs, as a depth-first walk of the calls would meet them.
+  std::vector<llvm::CallBase*> next;
+  while (!calls.empty()) {
+    llvm::CallBase* call = calls.back();
+    calls.pop_back();
+    llvm::InlineFunctionInfo info;
+    // Merging the callee's attributes (its minimum legal vector width)
+    // into the caller, as the always-inliner does.
+    if (!llvm::InlineFunction(*call, info, /*MergeAttributes=*/true).isSuccess()) continue;
+    next.clear();
+    for (llvm::CallBase* inlined : info.InlinedCallSites)
+      if (inlinable(*inlined)) next.push_back(inlined);
+    calls.insert(calls.end(), next.rbegin(), next.rend());
+  }
+  for (llvm::Function& function : llvm::make_early_inc_range(module)) {
+    if (function.isDeclaration() || !function.hasFnAttribute(llvm::Attribute::AlwaysInline) ||
+        !function.hasLocalLinkage())
+      continue;
+    function.removeDeadConstantUsers();
+    if (function.use_empty()) function.eraseFromParent();
+  }
+}
+
+}  // namespace shadetree
