@@ -1,25 +1,40 @@
 #include "jit/library_inliner.h"
 
 #include <algorithm>
+#include <map>
 #include <vector>
 
 #include <llvm/IR/InstIterator.h>
 #include <llvm/IR/Instructions.h>
 #include <llvm/IR/Module.h>
+#include <llvm/Analysis/InlineCost.h>
 #include <llvm/Transforms/Utils/Cloning.h>
 
 namespace shadetree {
 
 namespace {
 
-bool inlinable(const llvm::CallBase& call) {
-  const llvm::Function* callee = call.getCalledFunction();
-  return callee && !callee->isDeclaration() && callee->hasFnAttribute(llvm::Attribute::AlwaysInline);
-}
+// Whether `call` calls an always_inline function that can be inlined: one
+// that calls itself cannot (inlining it would never end), as LLVM's
+// isInlineViable tells, once per function.
+class Inlinable {
+ public:
+  bool operator()(const llvm::CallBase& call) {
+    llvm::Function* callee = call.getCalledFunction();
+    if (!callee || callee->isDeclaration() || !callee->hasFnAttribute(llvm::Attribute::AlwaysInline)) return false;
+    const auto [known, added] = viable_.try_emplace(callee, false);
+    if (added) known->second = llvm::isInlineViable(*callee).isSuccess();
+    return known->second;
+  }
+
+ private:
+  std::map<const llvm::Function*, bool> viable_;
+};
 
 }  // namespace
 
 void inline_library_calls(llvm::Module& module) {
+  Inlinable inlinable;
   std::vector<llvm::CallBase*> calls;
   for (llvm::Function& function : module)
     if (!function.hasFnAttribute(llvm::Attribute::AlwaysInline))
