@@ -4,10 +4,10 @@
 #include <map>
 #include <vector>
 
+#include <llvm/Analysis/InlineCost.h>
 #include <llvm/IR/InstIterator.h>
 #include <llvm/IR/Instructions.h>
 #include <llvm/IR/Module.h>
-#include <llvm/Analysis/InlineCost.h>
 #include <llvm/Transforms/Utils/Cloning.h>
 
 namespace shadetree {
@@ -43,7 +43,6 @@ void inline_library_calls(llvm::Module& module) {
   std::reverse(calls.begin(), calls.end());
   // In the order of the calls; a body's own calls right after it, in
   // theirs, as a depth-first walk of the calls would meet them.
-  std::vector<llvm::CallBase*> next;
   while (!calls.empty()) {
     llvm::CallBase* call = calls.back();
     calls.pop_back();
@@ -51,10 +50,8 @@ void inline_library_calls(llvm::Module& module) {
     // Merging the callee's attributes (its minimum legal vector width)
     // into the caller, as the always-inliner does.
     if (!llvm::InlineFunction(*call, info, /*MergeAttributes=*/true).isSuccess()) continue;
-    next.clear();
-    for (llvm::CallBase* inlined : info.InlinedCallSites)
-      if (inlinable(*inlined)) next.push_back(inlined);
-    calls.insert(calls.end(), next.rbegin(), next.rend());
+    for (auto inlined = info.InlinedCallSites.rbegin(); inlined != info.InlinedCallSites.rend(); ++inlined)
+      if (inlinable(**inlined)) calls.push_back(*inlined);
   }
   for (llvm::Function& function : llvm::make_early_inc_range(module)) {
     if (function.isDeclaration() || !function.hasFnAttribute(llvm::Attribute::AlwaysInline) ||
