@@ -36,6 +36,13 @@
 namespace shadetree {
 
 namespace {
+
+// The median of `values` (the upper middle one of an even count); there is
+// at least one.
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
 struct BenchArguments {
   std::vector<std::string> files;
   std::string size = "256x256";
@@ -107,8 +114,7 @@ double measure(const Kernel& kernel, const std::vector<float>& params, const Uni
     run_once();
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  std::nth_element(seconds.begin(), seconds.begin() + seconds.size() / 2, seconds.end());
-  return static_cast<double>(samples.count) / seconds[seconds.size() / 2];
+  return static_cast<double>(samples.count) / median(seconds);
 }
 
 // The backends a driver is measured with, and each one's kernel rate on
@@ -198,8 +204,8 @@ ExitStatus bench(const BenchArguments& arguments) {
   if (!arguments.json) {
     std::printf("%s (LLVM: %s); JIT: %d lanes, %s lookups\n", cpu.c_str(), jit_cpu.c_str(), jit_width,
                 jit_gathers.c_str());
-    std::printf("%-16s %8s %11s %9s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
-                "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
+    std::printf("%-16s %8s %11s %9s %17s %9s %11s %11s %11s %11s %9s\n", "graph", "samples", "nodes", "cold ms",
+                "emit/opt/gen ms", "cached ms", "interp 1t", "interp mt", "jit 1t", "jit mt", "jit/int");
   }
   std::map<GraphKind, DriverRows> driver_rows;
   for (const std::string& file : arguments.files) {
@@ -212,14 +218,21 @@ ExitStatus bench(const BenchArguments& arguments) {
     if (arguments.quick) settings.optimization = Optimization::quick;
     JitSettings cold_settings = settings;
     cold_settings.cold = true;
-    std::vector<double> cold_milliseconds;
+    std::vector<double> cold_milliseconds, emit_milliseconds, optimize_milliseconds, generate_milliseconds;
+    int modules = 0;
     for (int c = 0; c < arguments.compiles; ++c) {
       Result<CompiledKernel> cold = compile_kernel(loaded->ir, arguments.width, cold_settings);
       if (!cold) return report(cold.error());
       cold_milliseconds.push_back(cold->compile_milliseconds);
+      emit_milliseconds.push_back(cold->stages.emit_milliseconds);
+      optimize_milliseconds.push_back(cold->stages.optimize_milliseconds);
+      generate_milliseconds.push_back(cold->stages.generate_milliseconds);
+      modules = cold->stages.modules;
     }
-    std::sort(cold_milliseconds.begin(), cold_milliseconds.end());
-    const double cold_median = cold_milliseconds[cold_milliseconds.size() / 2];
+    const auto [fastest, slowest] = std::minmax_element(cold_milliseconds.begin(), cold_milliseconds.end());
+    const double cold_median = median(cold_milliseconds);
+    const double emit_median = median(emit_milliseconds), optimize_median = median(optimize_milliseconds),
+                 generate_median = median(generate_milliseconds);
     Result<std::unique_ptr<Kernel>> jit = make_jit_kernel(loaded->ir, arguments.width, settings);
     if (!jit) return report(jit.error());
     std::optional<double> cached_milliseconds;  // quick kernels are never cached
@@ -253,8 +266,11 @@ ExitStatus bench(const BenchArguments& arguments) {
                          {"nodes_before", loaded->instructions_before_optimization},
                          {"nodes_after", loaded->ir.code.size()},
                          {"compile_ms_cold", cold_median},
-                         {"compile_ms_cold_fastest", cold_milliseconds.front()},
-                         {"compile_ms_cold_slowest", cold_milliseconds.back()},
+                         {"compile_ms_cold_fastest", *fastest},
+                         {"compile_ms_cold_slowest", *slowest},
+                         {"compile_stages_ms",
+                          {{"emit", emit_median}, {"optimize", optimize_median}, {"generate", generate_median}}},
+                         {"compile_modules", modules},
                          {"compile_ms_cached", cached_milliseconds ? nlohmann::json(*cached_milliseconds) : nlohmann::json()},
                          {"interp_sps_1t", interp_1t},
                          {"interp_sps_mt", interp_mt},
@@ -268,10 +284,12 @@ ExitStatus bench(const BenchArguments& arguments) {
     } else {
       char cached_text[32] = "-";
       if (cached_milliseconds) std::snprintf(cached_text, sizeof cached_text, "%.3f", *cached_milliseconds);
-      std::printf("%-16s %8zu %5d->%-5zu %9.2f %9s %10.2fM %10.2fM %10.2fM %10.2fM %8.1fx\n", name.c_str(),
-                  samples.count, loaded->instructions_before_optimization, loaded->ir.code.size(),
-                  cold_median, cached_text, interp_1t / 1e6, interp_mt / 1e6, jit_1t / 1e6,
-                  jit_mt / 1e6, jit_1t / interp_1t);
+      char stages_text[48];
+      std::snprintf(stages_text, sizeof stages_text, "%.1f/%.1f/%.1f", emit_median, optimize_median, generate_median);
+      std::printf("%-16s %8zu %5d->%-5zu %9.2f %17s %9s %10.2fM %10.2fM %10.2fM %10.2fM %8.1fx\n", name.c_str(),
+                  samples.count, loaded->instructions_before_optimization, loaded->ir.code.size(), cold_median,
+                  stages_text, cached_text, interp_1t / 1e6, interp_mt / 1e6, jit_1t / 1e6, jit_mt / 1e6,
+                  jit_1t / interp_1t);
     }
   }
   if (arguments.json) {

@@ -146,6 +146,11 @@ struct KernelObject {
 // generated in two (jit/module_halves.h).
 using KernelObjects = std::vector<KernelObject>;
 
+// Milliseconds of wall time since `start`.
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The name of kernel `name`'s module `part`.
 std::string module_name(const std::string& name, KernelPart part) {
   return part == KernelPart::first ? name + "_first" : name;
@@ -204,26 +209,24 @@ class Jit {
     const auto start = std::chrono::steady_clock::now();
     const GatherStrategy gathers = effective_gathers(settings);
     std::string name = kernel_name(canonical_key(ir, width, gathers));
-    auto elapsed = [&] {
-      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    };
     const Optimization optimization = settings.optimization;
     if (settings.cold || optimization == Optimization::quick) {
       if (cached_only) return compiled({}, CacheHit::none, 0);
       name += (optimization == Optimization::quick ? "_quick" : "_cold") + std::to_string(++uncached_compiles_);
-      Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
+      CompileStages stages;
+      Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization, stages);
       if (!objects) return objects.error();
       std::lock_guard lock(mutex_);
       Result<std::shared_ptr<const KernelCode>> code = add_objects(ir, name, width, std::move(*objects));
       if (!code) return code.error();
-      return compiled(*code, CacheHit::none, elapsed());
+      return compiled(*code, CacheHit::none, milliseconds_since(start), stages);
     }
     const std::filesystem::path folder = settings.disk_cache ? user_cache_folder(settings.cache_folder) : std::filesystem::path();
     std::vector<std::shared_ptr<const KernelCode>> evicted;  // released after the lock, which their removal takes
     {
       std::lock_guard lock(mutex_);
       if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
-        return compiled(code, CacheHit::memory, elapsed());
+        return compiled(code, CacheHit::memory, milliseconds_since(start));
       if (!folder.empty()) {
         // Every object of the kernel, or none (the folder is pruned object
         // by object): each module's, and its half's if it calls one.
@@ -246,13 +249,14 @@ class Jit {
             std::error_code ignored;  // recently used: the last to be pruned
             for (const std::filesystem::path& file : files)
               std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ignored);
-            return admit(*code, CacheHit::disk, elapsed(), evicted);
+            return admit(*code, CacheHit::disk, milliseconds_since(start), evicted);
           }
         }
       }
     }
     if (cached_only) return compiled({}, CacheHit::none, 0);
-    Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization);
+    CompileStages stages;
+    Result<KernelObjects> objects = compile_objects(ir, width, name, gathers, optimization, stages);
     if (!objects) return objects.error();
     if (!folder.empty())
       for (const KernelObject& object : *objects)
@@ -260,10 +264,10 @@ class Jit {
     std::lock_guard lock(mutex_);
     // Another thread may have compiled the same program meanwhile.
     if (std::shared_ptr<const KernelCode> code = resident(name, evicted))
-      return compiled(code, CacheHit::none, elapsed());
+      return compiled(code, CacheHit::none, milliseconds_since(start), stages);
     Result<std::shared_ptr<const KernelCode>> code = add_objects(ir, name, width, std::move(*objects));
     if (!code) return code.error();
-    return admit(*code, CacheHit::none, elapsed(), evicted);
+    return admit(*code, CacheHit::none, milliseconds_since(start), evicted, stages);
   }
 
   Result<CompiledIntervalProgram> compile_intervals(const ShadeIR& ir, const std::vector<OutputId>& bounded) {
@@ -289,8 +293,7 @@ class Jit {
     if (!evaluate) return evaluate.error();
     return CompiledIntervalProgram{
         .evaluate = evaluate->toPtr<IntervalProgramFunction>(),
-        .compile_milliseconds =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+        .compile_milliseconds = milliseconds_since(start),
         .code = std::make_shared<const ResidentCode>(std::move(*linked), mutex_)};
   }
 
@@ -377,16 +380,21 @@ class Jit {
 
   // The kernel's object files: a kernel past the split threshold as two
   // modules compiled side by side, its first part on a thread of its own
-  // (which inherits the calling thread's priority).
+  // (which inherits the calling thread's priority). The time of each stage
+  // is added to `stages`.
   Result<KernelObjects> compile_objects(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
-                                        Optimization optimization) const {
+                                        Optimization optimization, CompileStages& stages) const {
     const std::optional<KernelSplit> split = kernel_split(ir, width);
-    if (!split) return compile_module(ir, width, name, gathers, optimization, KernelPart::whole, {});
+    if (!split) return compile_module(ir, width, name, gathers, optimization, KernelPart::whole, {}, stages);
     std::optional<Result<KernelObjects>> first;
-    std::thread first_part(
-        [&] { first = compile_module(ir, width, name, gathers, optimization, KernelPart::first, *split); });
-    Result<KernelObjects> objects = compile_module(ir, width, name, gathers, optimization, KernelPart::second, *split);
+    CompileStages first_stages;
+    std::thread first_part([&] {
+      first = compile_module(ir, width, name, gathers, optimization, KernelPart::first, *split, first_stages);
+    });
+    Result<KernelObjects> objects =
+        compile_module(ir, width, name, gathers, optimization, KernelPart::second, *split, stages);
     first_part.join();
+    stages += first_stages;
     if (!objects) return objects.error();
     if (!*first) return first->error();
     for (KernelObject& object : **first) objects->push_back(std::move(object));
@@ -397,10 +405,12 @@ class Jit {
   // thread; a large enough module has about half of it compiled on a
   // thread of its own (jit/module_halves.h).
   Result<KernelObjects> compile_module(const ShadeIR& ir, int width, const std::string& name, GatherStrategy gathers,
-                                       Optimization optimization, KernelPart part, const KernelSplit& split) const {
+                                       Optimization optimization, KernelPart part, const KernelSplit& split,
+                                       CompileStages& stages) const {
     const std::string half = half_name(module_name(name, part));
     llvm::LLVMContext context;
-    Result<std::unique_ptr<llvm::Module>> module = optimized_module(ir, width, context, name, gathers, optimization, part, split);
+    Result<std::unique_ptr<llvm::Module>> module =
+        optimized_module(ir, width, context, name, gathers, optimization, part, split, stages);
     if (!module) return module.error();
     // Instruction selection, scheduling and greedy register allocation grow
     // faster than the kernel: a 4000-instruction graph spent 2 s there. A
@@ -409,19 +419,29 @@ class Jit {
     const llvm::CodeGenOptLevel level = (*module)->getInstructionCount() > max_instructions_for_full_codegen
                                             ? llvm::CodeGenOptLevel::None
                                             : code_generation_level(optimization);
+    const auto generating = std::chrono::steady_clock::now();
     std::optional<llvm::SmallVector<char, 0>> half_bitcode;
     if (optimization == Optimization::full) half_bitcode = split_off_half(**module, half);
     std::optional<Result<std::unique_ptr<llvm::MemoryBuffer>>> half_object;
+    double half_milliseconds = 0;
     std::thread half_thread;
     if (half_bitcode)
       half_thread = std::thread([&] {
+        const auto start = std::chrono::steady_clock::now();
         llvm::LLVMContext half_context;
         Result<std::unique_ptr<llvm::Module>> half_code =
             half_module(llvm::StringRef(half_bitcode->data(), half_bitcode->size()), half, half_context);
         half_object = half_code ? generate_code(**half_code, level) : half_code.error();
+        half_milliseconds = milliseconds_since(start);
       });
     Result<std::unique_ptr<llvm::MemoryBuffer>> object = generate_code(**module, level);
-    if (half_thread.joinable()) half_thread.join();
+    stages.generate_milliseconds += milliseconds_since(generating);
+    ++stages.modules;
+    if (half_thread.joinable()) {
+      half_thread.join();
+      stages.generate_milliseconds += half_milliseconds;
+      ++stages.modules;
+    }
     if (!object) return object.error();
     KernelObjects objects;
     objects.push_back({module_name(name, part), std::move(*object)});
@@ -437,10 +457,10 @@ class Jit {
   Result<std::unique_ptr<llvm::Module>> optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                          const std::string& name, GatherStrategy gathers,
                                                          Optimization optimization, KernelPart part,
-                                                         const KernelSplit& split) const {
+                                                         const KernelSplit& split, CompileStages& stages) const {
     Result<LentMachine> machine = lend_machine(code_generation_level(optimization));
     if (!machine) return machine.error();
-    return build_optimized_module(ir, width, context, name, gathers, **machine, optimization, part, split);
+    return build_optimized_module(ir, width, context, name, gathers, **machine, optimization, part, split, &stages);
   }
 
   // The machine code of `module`, built on the calling thread.
@@ -504,12 +524,14 @@ class Jit {
     return std::shared_ptr<const KernelCode>(std::make_shared<KernelCode>(name, std::move(linked), functions, mutex_));
   }
 
-  static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds) {
+  static CompiledKernel compiled(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds,
+                                 const CompileStages& stages = {}) {
     if (!code) return {};
     return {.bind = code->bind,
             .run = code->run,
             .width = code->width,
             .compile_milliseconds = milliseconds,
+            .stages = stages,
             .cache = cache,
             .code = code};
   }
@@ -526,11 +548,11 @@ class Jit {
 
   // A new kernel: resident, and the most recently used.
   CompiledKernel admit(const std::shared_ptr<const KernelCode>& code, CacheHit cache, double milliseconds,
-                       std::vector<std::shared_ptr<const KernelCode>>& evicted) {
+                       std::vector<std::shared_ptr<const KernelCode>>& evicted, const CompileStages& stages = {}) {
     std::erase_if(resident_, [](const auto& entry) { return entry.second.expired(); });
     resident_[code->name] = code;
     keep_recent(code, evicted);
-    return compiled(code, cache, milliseconds);
+    return compiled(code, cache, milliseconds, stages);
   }
 
   // Moves `code` to the front of the memory cache; what falls off its end

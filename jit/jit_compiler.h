@@ -30,12 +30,33 @@ enum class CacheHit { none, memory, disk };
 // Kernel's) goes.
 struct KernelCode;
 
+// Where a compile's time went: milliseconds of thread time in each stage,
+// summed over the threads that ran it (a split kernel's two parts, and a
+// module's half, run side by side: codegen/kernel_split.h,
+// jit/module_halves.h), so the stages may add up to more than the
+// compile's wall time. All zero where the kernel came from a cache.
+struct CompileStages {
+  double emit_milliseconds = 0;      // the kernel's LLVM IR, the op library read in
+  double optimize_milliseconds = 0;  // the middle end (jit/optimization_pipeline.h)
+  double generate_milliseconds = 0;  // instruction selection, register allocation, the object files
+  int modules = 0;                   // modules whose code was generated, each on a thread of its own
+
+  CompileStages& operator+=(const CompileStages& other) {
+    emit_milliseconds += other.emit_milliseconds;
+    optimize_milliseconds += other.optimize_milliseconds;
+    generate_milliseconds += other.generate_milliseconds;
+    modules += other.modules;
+    return *this;
+  }
+};
+
 struct CompiledKernel {
   KernelBindFunction bind = nullptr;
   KernelRunFunction run = nullptr;
   int width = 0;
   int state_size = 0;  // floats bind leaves for run (codegen/emit_kernel.h)
   double compile_milliseconds = 0;
+  CompileStages stages;
   CacheHit cache = CacheHit::none;
   std::shared_ptr<const KernelCode> code;  // keeps bind and run callable
 };

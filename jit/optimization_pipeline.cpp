@@ -1,5 +1,7 @@
 #include "jit/optimization_pipeline.h"
 
+#include <chrono>
+
 #include <llvm/ADT/SmallString.h>
 #include <llvm/IR/LegacyPassManager.h>
 #include <llvm/IR/Module.h>
@@ -70,10 +72,18 @@ void optimize_module(llvm::Module& module, llvm::TargetMachine& machine, Optimiz
 Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                              const std::string& name, GatherStrategy gathers,
                                                              llvm::TargetMachine& machine, Optimization optimization,
-                                                             KernelPart part, const KernelSplit& split) {
+                                                             KernelPart part, const KernelSplit& split,
+                                                             CompileStages* stages) {
+  const auto start = std::chrono::steady_clock::now();
   Result<std::unique_ptr<llvm::Module>> module = emit_kernel_module(ir, width, context, name, gathers, part, split);
   if (!module) return module.error();
+  const auto emitted = std::chrono::steady_clock::now();
   optimize_for(**module, machine, optimization);
+  if (stages) {
+    stages->emit_milliseconds += std::chrono::duration<double, std::milli>(emitted - start).count();
+    stages->optimize_milliseconds +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - emitted).count();
+  }
   return module;
 }
 

@@ -24,12 +24,14 @@ namespace shadetree {
 llvm::CodeGenOptLevel code_generation_level(Optimization optimization);
 
 // The kernel module of `ir` (or of a part of it: emit_kernel_module),
-// made for `machine` and optimized.
+// made for `machine` and optimized; the time each took is added to
+// `stages` where given.
 Result<std::unique_ptr<llvm::Module>> build_optimized_module(const ShadeIR& ir, int width, llvm::LLVMContext& context,
                                                              const std::string& name, GatherStrategy gathers,
                                                              llvm::TargetMachine& machine, Optimization optimization,
                                                              KernelPart part = KernelPart::whole,
-                                                             const KernelSplit& split = {});
+                                                             const KernelSplit& split = {},
+                                                             CompileStages* stages = nullptr);
 
 // An emitted module (a kernel's, an interval program's) made for
 // `machine` and optimized.

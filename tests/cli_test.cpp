@@ -669,8 +669,8 @@ TEST_F(Cli, BenchPrintsTheDocumentedJsonKeys) {
   const auto results = nlohmann::json::parse(run.out);
   ASSERT_EQ(results.size(), 2u);
   for (const char* key : {"graph", "samples", "nodes_before", "nodes_after", "compile_ms_cold", "compile_ms_cached",
-                          "interp_sps_1t", "interp_sps_mt", "jit_sps_1t", "jit_sps_mt", "cpu", "jit_cpu", "jit_width",
-                          "jit_gathers"})
+                          "compile_stages_ms", "compile_modules", "interp_sps_1t", "interp_sps_mt", "jit_sps_1t",
+                          "jit_sps_mt", "cpu", "jit_cpu", "jit_width", "jit_gathers"})
     EXPECT_TRUE(results[0].contains(key)) << key;
   EXPECT_EQ(results[0]["graph"], "checker_aa");
   EXPECT_EQ(results[1]["samples"], 1024);
@@ -693,6 +693,23 @@ TEST_F(Cli, BenchReportsTheMedianOfItsColdCompiles) {
   const CommandResult none = shadetree("bench " + gallery + "checker_aa.json --size 16x16 --compiles 0");
   EXPECT_EQ(none.status, 2);
   EXPECT_NE(none.err.find("--compiles"), std::string::npos) << none.err;
+}
+
+// A cold compile's stages, each the median of the compiles: one module
+// compiled on one thread spends no more in them than the compile took.
+TEST_F(Cli, BenchBreaksItsColdCompilesIntoStages) {
+  const CommandResult run = shadetree("bench " + gallery +
+                                      "checker_aa.json --size 16x16 --repetitions 1 --compiles 1 --width 8 --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto result = nlohmann::json::parse(run.out)[0];
+  const auto& stages = result["compile_stages_ms"];
+  double total = 0.0;
+  for (const char* stage : {"emit", "optimize", "generate"}) {
+    EXPECT_GT(stages[stage].get<double>(), 0.0) << stage;
+    total += stages[stage].get<double>();
+  }
+  EXPECT_LE(total, result["compile_ms_cold"].get<double>());
+  EXPECT_EQ(result["compile_modules"], 1);
 }
 
 // A driver's table row is as long as its graph's name: a name longer

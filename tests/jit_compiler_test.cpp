@@ -298,6 +298,38 @@ TEST(JitCompiler, SplitKernelsKeepBothObjectsInTheDiskCache) {
   std::filesystem::remove_all(folder);
 }
 
+// A compile says where its time went: each stage took some, a split
+// kernel generated the code of both its modules (and of any half), and a
+// cache hit compiled nothing.
+TEST(JitCompiler, CompilesReportTheirStagesAndCacheHitsNone) {
+  JitSettings cold = memory_only();
+  cold.cold = true;
+  Result<LoadedGraph> whole = compile_graph_text(noise_graph, "noise.json");
+  ASSERT_TRUE(whole.ok()) << whole.error().to_string();
+  Result<LoadedGraph> split = compile_graph_text(split_graph, "split.json");
+  ASSERT_TRUE(split.ok()) << split.error().to_string();
+  Result<CompiledKernel> compiled = compile_kernel(whole->ir, 8, cold);
+  ASSERT_TRUE(compiled.ok()) << compiled.error().to_string();
+  const CompileStages& stages = compiled->stages;
+  EXPECT_GT(stages.emit_milliseconds, 0.0);
+  EXPECT_GT(stages.optimize_milliseconds, 0.0);
+  EXPECT_GT(stages.generate_milliseconds, 0.0);
+  EXPECT_EQ(stages.modules, 1);
+  // One module, compiled on the calling thread: its stages are parts of
+  // the compile's time.
+  EXPECT_LE(stages.emit_milliseconds + stages.optimize_milliseconds + stages.generate_milliseconds,
+            compiled->compile_milliseconds);
+  Result<CompiledKernel> parts = compile_kernel(split->ir, 8, cold);
+  ASSERT_TRUE(parts.ok()) << parts.error().to_string();
+  EXPECT_GE(parts->stages.modules, 2);
+  ASSERT_TRUE(compile_kernel(whole->ir, 8, memory_only()).ok());
+  Result<CompiledKernel> hit = compile_kernel(whole->ir, 8, memory_only());
+  ASSERT_TRUE(hit.ok()) << hit.error().to_string();
+  EXPECT_EQ(hit->cache, CacheHit::memory);
+  EXPECT_EQ(hit->stages.modules, 0);
+  EXPECT_EQ(hit->stages.emit_milliseconds + hit->stages.optimize_milliseconds + hit->stages.generate_milliseconds, 0.0);
+}
+
 // A module whose code is generated in two halves (jit/module_halves.h) is
 // two objects, cached together; without its half the kernel is compiled
 // anew, quietly.
