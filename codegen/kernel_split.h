@@ -37,9 +37,12 @@ constexpr unsigned crossing_vector_weight = 8;
 // block on the stack) would cost more than the parallel compile saves.
 constexpr int max_crossing_vectors = 32;
 // Library instructions (op_library_instructions, what the kernel's
-// constants leave of its ops) below which a kernel compiles whole: marble
-// (1269) compiles in 25-40 ms, and splitting costs a little speed.
-constexpr unsigned split_threshold = 1300;
+// constants leave of its ops) below which a kernel compiles whole. On two
+// cores of Zen 3, kernels from here up (turbulence, marble, water_waves)
+// compiled in two parts a quarter to a third faster and ran as fast;
+// smaller ones (bozo, stf_2d) gained nothing measurable
+// (docs/architecture.md, "Each stage of a cold compile").
+constexpr unsigned split_threshold = 800;
 
 // Where to split `ir`'s kernel of `width`, or nothing to compile it whole.
 std::optional<KernelSplit> kernel_split(const ShadeIR& ir, int width);

@@ -332,18 +332,19 @@ TEST(SplitKernelDifferential, SmallKernelsCompileWhole) {
   EXPECT_EQ(listing->find("; module"), std::string::npos);
 }
 
-// Half of each of these kernels is compiled apart and called, with the
-// values it leaves passed through memory: of looping_turbulence, the
-// first part of its octave loop's one long block (a periodic 4D noise,
-// antialiased); of the fireball at width 16, the same; of
-// eroded_cube, its first octave loop; of mesh_hypertexture at width 16, a
-// stretch that reads the mesh, which both modules only declare (the JIT
-// binds it when it links them). Their sizes are per-lane lookups' (other
-// strategies read the mesh by gathers, and it compiles whole). The result
-// is the interpreter's to the bit.
+// Half of a module of each of these kernels is compiled apart and called,
+// with the values it leaves passed through memory: of looping_turbulence,
+// the first part of its octave loop's one long block (a periodic 4D
+// noise, antialiased); of the fireball at width 16, the same; of
+// tileable_stones at width 16, a stretch of its first part's sample loop
+// (its cellular noise) and a block of its second's; of mesh_hypertexture
+// at width 16, a stretch that reads the mesh, which both modules only
+// declare (the JIT binds it when it links them). Their sizes are per-lane
+// lookups' (other strategies read the mesh by gathers, and it compiles
+// whole). The result is the interpreter's to the bit.
 TEST(SplitKernelDifferential, KernelsGeneratedInHalvesAgree) {
   const std::vector<std::pair<const char*, std::vector<int>>> halved = {
-      {"looping_turbulence", {8}}, {"fireball", {16}}, {"eroded_cube", {8, 16}}, {"mesh_hypertexture", {16}}};
+      {"looping_turbulence", {8}}, {"fireball", {16}}, {"tileable_stones", {16}}, {"mesh_hypertexture", {16}}};
   JitSettings per_lane;
   per_lane.gathers = GatherStrategy::per_lane;
   for (const auto& [name, widths] : halved) {
