@@ -43,6 +43,7 @@ double median(std::vector<double> values) {
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
 }
+
 struct BenchArguments {
   std::vector<std::string> files;
   std::string size = "256x256";
