@@ -38,7 +38,7 @@ struct KernelCode;
 struct CompileStages {
   double emit_milliseconds = 0;      // the kernel's LLVM IR, the op library read in
   double optimize_milliseconds = 0;  // the middle end (jit/optimization_pipeline.h)
-  double generate_milliseconds = 0;  // instruction selection, register allocation, the object files
+  double generate_milliseconds = 0;  // a module's half cut off, instruction selection, register allocation, objects
   int modules = 0;                   // modules whose code was generated, each on a thread of its own
 
   CompileStages& operator+=(const CompileStages& other) {
