@@ -47,6 +47,22 @@ std::string instruction_comment(const IrInstr& instr) {
   return text;
 }
 
+std::string program_key_text(const ShadeIR& ir) {
+  std::ostringstream text;
+  for (const IrInstr& instr : ir.code) {
+    text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
+         << ' ' << static_cast<int>(instr.generic) << ' ' << instr.uniform << ' ' << instr.dual << ' ' << instr.data_offset << ' '
+         << instr.data_count << ' ' << instr.immediate[0] << ' ' << instr.immediate[1];
+    for (int a = 0; a < instr.arg_count; ++a) text << ' ' << instr.args[a];
+    text << '\n';
+  }
+  text.write(reinterpret_cast<const char*>(ir.data.data()), static_cast<std::streamsize>(ir.data.size() * sizeof(float)));
+  text << "kind " << static_cast<int>(ir.kind) << '\n';
+  for (const IrOutput& output : ir.outputs)
+    text << "out " << static_cast<int>(output.id) << ' ' << output.value << ' ' << static_cast<int>(output.type) << '\n';
+  return text.str();
+}
+
 std::string format_shade_ir(const ShadeIR& ir) {
   std::ostringstream text;
   for (const IrParam& param : ir.params)

@@ -90,6 +90,11 @@ Type argument_type(const IrInstr& instr, int a);
 // gradient, and its node, quoted by graph/generated_names.h's quoted_text.
 std::string instruction_comment(const IrInstr& instr);
 
+// A canonical text of everything `ir` computes (its instructions, their
+// constants and its outputs; not the nodes they came from): two programs
+// with the same text compute the same values. Caches key on it.
+std::string program_key_text(const ShadeIR& ir);
+
 // Human-readable listing, one instruction a line (shadetree emit --graph).
 std::string format_shade_ir(const ShadeIR& ir);
 

@@ -120,19 +120,7 @@ std::string error_text(llvm::Error error) {
 std::string canonical_key(const ShadeIR& ir, int width, GatherStrategy gathers) {
   std::ostringstream text;
   text << kernel_abi_hash() << " " << op_library_hash() << " " << SHADETREE_CODEGEN_DIGEST << "\n" << width << " " << static_cast<int>(gathers) << "\n" << host_cpu_name() << "\n" << host_features() << "\n";
-  for (const IrInstr& instr : ir.code) {
-    text << static_cast<int>(instr.kind) << ' ' << static_cast<int>(instr.op) << ' ' << static_cast<int>(instr.type)
-         << ' ' << static_cast<int>(instr.generic)
-         << ' ' << instr.uniform << ' ' << instr.data_offset << ' ' << instr.data_count << ' ' << instr.immediate[0]
-         << ' ' << instr.immediate[1];
-    for (int a = 0; a < instr.arg_count; ++a) text << ' ' << instr.args[a];
-    text << '\n';
-  }
-  text.write(reinterpret_cast<const char*>(ir.data.data()), static_cast<std::streamsize>(ir.data.size() * sizeof(float)));
-  text << "kind " << static_cast<int>(ir.kind) << '\n';
-  for (const IrOutput& output : ir.outputs)
-    text << "out " << static_cast<int>(output.id) << ' ' << output.value << ' ' << static_cast<int>(output.type) << '\n';
-  return text.str();
+  return text.str() + program_key_text(ir);
 }
 
 // One object file of a kernel, under the name the disk cache keeps it by.
