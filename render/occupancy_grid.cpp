@@ -27,6 +27,14 @@ Status for_each_brick(int threads, const std::atomic<bool>* cancel, const std::f
 
 }  // namespace
 
+OccupancyGrid::OccupancyGrid(const glm::vec3& lo, const glm::vec3& hi)
+    : lo_(lo),
+      hi_(hi),
+      cell_size_((hi - lo) / static_cast<float>(cells_per_side)),
+      cells_per_unit_(1.0f / cell_size_),
+      bricks_(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, some_brick),
+      cells_(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1) {}
+
 void OccupancyGrid::set_cells(const glm::ivec3& first, int side, std::uint8_t state) {
   for (int k = 0; k < side; ++k)
     for (int j = 0; j < side; ++j)
@@ -57,13 +65,7 @@ bool OccupancyGrid::refine_octants(const BoxOccupancy& occupied, const glm::ivec
 Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, const glm::vec3& hi,
                                                           const BoxOccupancy& occupied, double least_empty,
                                                           int threads, const std::atomic<bool>* cancel) {
-  OccupancyGrid grid;
-  grid.lo_ = lo;
-  grid.hi_ = hi;
-  grid.cell_size_ = (hi - lo) / static_cast<float>(cells_per_side);
-  grid.cells_per_unit_ = 1.0f / grid.cell_size_;
-  grid.bricks_.assign(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, some_brick);
-  grid.cells_.assign(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1);
+  OccupancyGrid grid(lo, hi);
   const glm::vec3 brick_size = grid.cell_size_ * static_cast<float>(cells_per_brick_side);
   const auto classify = [&](const glm::ivec3& brick) {
     const glm::vec3 brick_lo = lo + glm::vec3(brick) * brick_size;
@@ -232,6 +234,36 @@ double OccupancyGrid::surveyed_empty_fraction() const {
 
 double OccupancyGrid::empty_fraction() const {
   return static_cast<double>(std::count(cells_.begin(), cells_.end(), 0)) / static_cast<double>(cells_.size());
+}
+
+std::string OccupancyGrid::serialized() const {
+  std::string bytes(bricks_.begin(), bricks_.end());
+  bytes.append(cells_.size() / 8, '\0');
+  char* bits = bytes.data() + bricks_.size();
+  for (std::size_t cell = 0; cell < cells_.size(); ++cell)
+    if (cells_[cell]) bits[cell / 8] = static_cast<char>(bits[cell / 8] | (1 << (cell % 8)));
+  return bytes;
+}
+
+std::optional<OccupancyGrid> OccupancyGrid::deserialized(const glm::vec3& lo, const glm::vec3& hi,
+                                                         std::string_view bytes) {
+  OccupancyGrid grid(lo, hi);
+  if (bytes.size() != serialized_size()) return std::nullopt;
+  for (std::size_t brick = 0; brick < grid.bricks_.size(); ++brick) {
+    grid.bricks_[brick] = static_cast<std::uint8_t>(bytes[brick]);
+    if (grid.bricks_[brick] > full_brick) return std::nullopt;
+  }
+  const std::string_view bits = bytes.substr(grid.bricks_.size());
+  for (std::size_t cell = 0; cell < grid.cells_.size(); ++cell)
+    grid.cells_[cell] = (static_cast<unsigned char>(bits[cell / 8]) >> (cell % 8)) & 1;
+  // An empty brick's cells are what the walk steps over without looking.
+  for (int z = 0; z < cells_per_side; ++z)
+    for (int y = 0; y < cells_per_side; ++y)
+      for (int x = 0; x < cells_per_side; ++x)
+        if (grid.cell_occupied({x, y, z}) &&
+            grid.bricks_[brick_index(glm::ivec3(x, y, z) / cells_per_brick_side)] == empty_brick)
+          return std::nullopt;
+  return grid;
 }
 
 }  // namespace shadetree

@@ -25,6 +25,8 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -89,9 +91,22 @@ class OccupancyGrid {
   Clearance next_occupied(const glm::vec3& origin, const glm::vec3& direction, float t, float end) const;
 
   double empty_fraction() const;  // of the bounds' volume
+
+  // The grid's states as bytes (a brick a byte, then a cell a bit), and
+  // the grid of [lo, hi] those bytes make: none where they are not a
+  // grid's (cut short, too long, a brick's state unknown, or an empty
+  // brick with an occupied cell).
+  std::string serialized() const;
+  static constexpr std::size_t serialized_size() {
+    return std::size_t{bricks_per_side} * bricks_per_side * bricks_per_side +
+           std::size_t{cells_per_side} * cells_per_side * cells_per_side / 8;
+  }
+  static std::optional<OccupancyGrid> deserialized(const glm::vec3& lo, const glm::vec3& hi, std::string_view bytes);
   std::size_t bytes() const { return cells_.size() + bricks_.size(); }
 
  private:
+  // [lo, hi] with every brick holding some and every cell occupied.
+  OccupancyGrid(const glm::vec3& lo, const glm::vec3& hi);
   // The cell of the finest level that a point of the bounds lies in.
   glm::ivec3 cell_of(const glm::vec3& point) const;
   static std::size_t brick_index(const glm::ivec3& brick) {

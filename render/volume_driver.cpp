@@ -13,12 +13,14 @@
 #include <glm/geometric.hpp>
 
 #include "graph/parse_volume.h"
+#include "platform/user_cache.h"
 #include "interp/interval_program.h"
 #include "render/density_gradient.h"
 #include "render/environment_driver.h"
 #include "schedule/image_tiles.h"
 #include "scene/lighting.h"
 #include "render/occupancy_grid.h"
+#include "render/occupancy_grid_cache.h"
 #include "render/pixel_hash.h"
 #include "render/transmittance_grid.h"
 #include "schedule/stage_clock.h"
@@ -907,6 +909,15 @@ struct EmptySpace {
   double samples_saved = 0.0;  // by the second level, as estimated from its survey
 };
 
+// What bounding a volume's empty space encloses: its opacity (or its
+// density where it has none) first, and its index where it refracts. Only
+// they are evaluated, not the colour.
+std::vector<OutputId> bounded_outputs(const OutputLayout& layout) {
+  std::vector<OutputId> bounded{layout.provides(OutputId::opacity) ? OutputId::opacity : OutputId::density};
+  if (layout.provides(OutputId::ior)) bounded.push_back(OutputId::ior);
+  return bounded;
+}
+
 // Where the volume may be visible: boxes of P (with any direction I) over
 // which the graph's interval enclosure (interp/interval_program.h) of
 // its opacity, or density where it has none, is not certainly 0, or, where
@@ -919,11 +930,8 @@ struct EmptySpace {
 Result<EmptySpace> bound_empty_space(const Kernel& kernel, BoundKernel& bound, const std::vector<float>& params,
                                      const VolumeDesc& volume, float frame, float step, long rays,
                                      const VolumeRenderOptions& options) {
-  // Only what is bounded is evaluated: the opacity (or density) and the
-  // index, not the colour.
-  const OutputId seen = kernel.outputs().provides(OutputId::opacity) ? OutputId::opacity : OutputId::density;
-  std::vector<OutputId> bounded{seen};
-  if (kernel.outputs().provides(OutputId::ior)) bounded.push_back(OutputId::ior);
+  const std::vector<OutputId> bounded = bounded_outputs(kernel.outputs());
+  const OutputId seen = bounded.front();
   const IntervalProgram program(kernel.ir(), bounded);
   const UniformInputs uniforms = volume_uniforms(frame, step);
   // Per thread: a binding, and the enclosures of its last box.
@@ -1121,7 +1129,9 @@ class VolumeFrames : public FrameRenderer {
                                stats.shadow_samples);
     if (stats.empty_fraction > 0.0)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
+                              stats.empty_space_read
+                                  ? ", %ld skipped in the %.0f%% of the bounds found empty before (read in %.3f s)"
+                                  : ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
                               stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds);
     else if (known)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
@@ -1220,14 +1230,26 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   std::optional<OccupancyGrid> occupancy;
   EmptySpaceVerdict empty_space_verdict = EmptySpaceVerdict::not_asked;
   double samples_saved = 0.0, occupancy_seconds = 0.0;
+  bool empty_space_read = false;
   if (options.skip_empty_space) {
     const auto occupancy_start = std::chrono::steady_clock::now();
-    Result<EmptySpace> bounded = bound_empty_space(kernel, bindings.local(), params, volume, view.frame, step,
-                                                   static_cast<long>(view.width) * view.height, options);
-    if (!bounded) return bounded.error();
-    occupancy = std::move(bounded->grid);
-    empty_space_verdict = bounded->verdict;
-    samples_saved = bounded->samples_saved;
+    const EmptySpaceSource source =
+        empty_space_source(kernel.ir(), bounded_outputs(layout), params, volume_uniforms(view.frame, step),
+                           glm::vec3(volume.bounds_min[0], volume.bounds_min[1], volume.bounds_min[2]),
+                           glm::vec3(volume.bounds_max[0], volume.bounds_max[1], volume.bounds_max[2]));
+    occupancy = read_cached_empty_space(options.empty_space_cache, source);
+    empty_space_read = occupancy.has_value();
+    if (empty_space_read) {
+      empty_space_verdict = EmptySpaceVerdict::skipped;
+    } else {
+      Result<EmptySpace> bounded = bound_empty_space(kernel, bindings.local(), params, volume, view.frame, step,
+                                                     static_cast<long>(view.width) * view.height, options);
+      if (!bounded) return bounded.error();
+      occupancy = std::move(bounded->grid);
+      empty_space_verdict = bounded->verdict;
+      samples_saved = bounded->samples_saved;
+      if (occupancy) store_empty_space(options.empty_space_cache, source, *occupancy);
+    }
     occupancy_seconds = since(occupancy_start);
   }
   const OccupancyGrid* empty_space = occupancy ? &*occupancy : nullptr;
@@ -1297,6 +1319,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
       }
     stats->empty_fraction = occupancy ? occupancy->empty_fraction() : 0.0;
     stats->empty_space = empty_space_verdict;
+    stats->empty_space_read = empty_space_read;
     stats->samples_saved = samples_saved;
     stats->occupancy_seconds = occupancy_seconds;
     stats->grid_seconds = grid_seconds;
@@ -1328,6 +1351,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.shadows = request.shadows;
   // Exact shadows are the reference marcher: every sample marched.
   options.skip_empty_space = request.shadows != ShadowMode::exact;
+  options.empty_space_cache = user_cache_folder("");
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;
   options.tile_done = request.tile_done;

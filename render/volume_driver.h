@@ -15,6 +15,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <filesystem>
 #include <iterator>
 #include <optional>
 #include <vector>
@@ -50,6 +51,9 @@ struct VolumeRenderOptions {
   // Bound empty space finely even where that is estimated to cost more
   // than the samples it saves (a small image): the same pixels either way.
   bool bound_finely_always = false;
+  // The folder where empty space found is kept and found again
+  // (render/occupancy_grid_cache.h); empty: it is found anew each render.
+  std::filesystem::path empty_space_cache;
   float shadow_step = 0.0f;  // of the shadow march; 0: the volume's reference step (parse_volume.h)
   int packet_rays = 0;  // rays marched together; 0: a whole tile (32 x 32); 1: one ray at a time
   int lane_width = 0;   // the kernel's vector width, for the lane utilisation figure only
@@ -104,6 +108,7 @@ struct VolumeRenderStats {
   long skipped_samples = 0;   // of primary, shadow and grid rays, in empty space
   double empty_fraction = 0;  // of the bounds, by the interval bounds
   EmptySpaceVerdict empty_space = EmptySpaceVerdict::not_asked;
+  bool empty_space_read = false;  // skipped where an earlier render found it (the cache's)
   double samples_saved = 0;   // by bounding empty space finely, as estimated before (not_worth_bounding)
   double occupancy_seconds = 0;  // wall time of bounding the graph over the bounds' bricks
   long kernel_calls = 0;

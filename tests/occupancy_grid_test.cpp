@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -218,6 +219,41 @@ TEST(OccupancyGrid, CancellingStopsTheBuild) {
   Result<std::optional<OccupancyGrid>> grid =
       OccupancyGrid::build(glm::vec3(0.0f), glm::vec3(1.0f), meets_sphere, 0.0, 1, &cancel);
   EXPECT_FALSE(grid.ok());
+}
+
+// A grid's bytes make the same grid again: every cell, and every ray's
+// walk, as the grid it was read from. Bytes that are not a grid's make
+// none.
+TEST(OccupancyGrid, AGridsBytesMakeTheSameGrid) {
+  const OccupancyGrid grid = sphere_grid();
+  const std::string bytes = grid.serialized();
+  ASSERT_EQ(bytes.size(), OccupancyGrid::serialized_size());
+  const std::optional<OccupancyGrid> read = OccupancyGrid::deserialized(glm::vec3(-1.0f), glm::vec3(1.0f), bytes);
+  ASSERT_TRUE(read.has_value());
+  EXPECT_EQ(read->empty_fraction(), grid.empty_fraction());
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (int n = 0; n < 20000; ++n) {
+    const glm::vec3 point(unit(random), unit(random), unit(random));
+    ASSERT_EQ(read->occupied(point), grid.occupied(point));
+    const glm::vec3 direction = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) + 1e-3f);
+    const Clearance expected = grid.next_occupied(point, direction, 0.0f, 4.0f);
+    const Clearance found = read->next_occupied(point, direction, 0.0f, 4.0f);
+    ASSERT_EQ(found.from, expected.from);
+    ASSERT_EQ(found.until, expected.until);
+  }
+  EXPECT_FALSE(OccupancyGrid::deserialized(glm::vec3(-1.0f), glm::vec3(1.0f), bytes.substr(1)));
+  EXPECT_FALSE(OccupancyGrid::deserialized(glm::vec3(-1.0f), glm::vec3(1.0f), bytes + '\0'));
+  std::string unknown_state = bytes;
+  unknown_state[0] = 3;
+  EXPECT_FALSE(OccupancyGrid::deserialized(glm::vec3(-1.0f), glm::vec3(1.0f), unknown_state));
+  // The first brick is a corner's, which the sphere leaves empty.
+  ASSERT_EQ(bytes[0], 0);
+  std::string occupied_in_empty_brick = bytes;
+  occupied_in_empty_brick[OccupancyGrid::serialized_size() - OccupancyGrid::cells_per_side *
+                                                                  OccupancyGrid::cells_per_side *
+                                                                  OccupancyGrid::cells_per_side / 8] = 1;
+  EXPECT_FALSE(OccupancyGrid::deserialized(glm::vec3(-1.0f), glm::vec3(1.0f), occupied_in_empty_brick));
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "render/volume_driver.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
+#include "support/temp_folder.h"
 
 namespace shadetree {
 namespace {
@@ -579,6 +580,35 @@ TEST(VolumeDriver, SkippingEmptySpaceChangesNoPixel) {
         << name;
     EXPECT_GT(stats.skipped_samples, 0) << name;
   }
+}
+
+// Empty space found by one render is read again by the next of the same
+// graph, params, frame and bounds (render/occupancy_grid_cache.h), from
+// another camera or light: the same cells, so the same pixels as bounding
+// anew.
+TEST(VolumeDriver, EmptySpaceFoundOnceIsReadAgain) {
+  const LoadedGraph sphere = compile_volume(R"({"id": "p", "op": "P"},
+      {"id": "s", "op": "sphere", "in": {"p": "p", "radius": 0.3, "softness": 0.2}})",
+                                            R"("density": "s")");
+  auto kernel = make_interpreted_kernel(sphere.ir);
+  testing::TempFolder cache("shadetree-volume-empty-space");
+  VolumeRenderOptions options;
+  options.bound_finely_always = true;
+  options.empty_space_cache = cache.path();
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  VolumeRenderStats first, second, anew;
+  const Image found = render(*kernel, sphere, desc, unit_box(0.02f), 40, options, &first);
+  EXPECT_FALSE(first.empty_space_read);
+  EXPECT_EQ(first.empty_space, EmptySpaceVerdict::skipped);
+  desc.lights[0].direction = {1.0f, 0.0f, -0.3f};
+  const Image read = render(*kernel, sphere, desc, unit_box(0.02f), 40, options, &second);
+  EXPECT_TRUE(second.empty_space_read);
+  EXPECT_EQ(second.empty_fraction, first.empty_fraction);
+  EXPECT_GT(second.skipped_samples, 0);
+  options.empty_space_cache.clear();
+  EXPECT_EQ(read.pixels, render(*kernel, sphere, desc, unit_box(0.02f), 40, options, &anew).pixels);
+  EXPECT_FALSE(anew.empty_space_read);
+  EXPECT_NE(found.pixels, read.pixels) << "the light moved";
 }
 
 // A sequence's frames share one renderer, which remembers a frame's
