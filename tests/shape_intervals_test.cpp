@@ -139,23 +139,29 @@ TEST(ShapeIntervals, GridDistanceEnclosesItsTrilinearLookupAndTheDistanceBeyond)
   EXPECT_NEAR(far.hi, cell_hull(3, 2, 1).hi + 13.0f, 1e-3f);
 }
 
-// A component of d / |d| in float: 1 up to rounding, but where |d|^2 is
-// subnormal, rounded to a multiple of 2^-149, up to sqrt(1.5) (a squared
-// length of 1.49 2^-149 read as 2^-149). The bound covers both.
-TEST(ShapeIntervals, UnitVectorsOfSubnormalLengthReachPastOne) {
-  float largest = 0.0f;
+// d / |d| in float is a unit vector to rounding however short d is: where
+// its squares underflow (rounded to a multiple of 2^-149, a subnormal sum
+// could be a third short and made components of up to sqrt(1.5); rounded
+// to 0, a vector that is not zero normalized to 0) it is scaled first.
+TEST(ShapeIntervals, TinyVectorsNormalizeToUnitVectors) {
   for (int k = 1; k < 4000; ++k) {
-    const float x = std::sqrt(static_cast<float>(k) / 1000.0f) * std::ldexp(1.0f, -75);
-    const float v[3] = {x, 0.0f, 0.0f};
-    float unit[3];
-    semantics::normalize_n(v, 3, unit);
-    largest = std::max(largest, unit[0]);
-    const Interval squared{x * x, x * x};
-    EXPECT_LE(unit[0], lanes::unit_component_bound(squared)) << x;
+    for (float scale : {std::ldexp(1.0f, -75), std::ldexp(1.0f, -100), std::ldexp(1.0f, -140), 1.0f}) {
+      const float x = std::sqrt(static_cast<float>(k) / 1000.0f) * scale;
+      const float v[3] = {x, -0.5f * x, 0.25f * x};
+      float unit[3];
+      semantics::normalize_n(v, 3, unit);
+      const double length = std::sqrt(double(unit[0]) * unit[0] + double(unit[1]) * unit[1] + double(unit[2]) * unit[2]);
+      ASSERT_LE(length, lanes::unit_length_bound) << x;
+      ASSERT_GE(length, 1.0 - 1e-6) << x;
+      ASSERT_GT(unit[0], 0.0f) << x;
+    }
   }
-  EXPECT_GT(largest, 1.1f) << "subnormal squares round by a large share";
-  EXPECT_LE(largest, 1.25f);
-  EXPECT_EQ(lanes::unit_component_bound({FLT_MIN, 1.0f}), 1.0f + 1e-6f);
+  const float zero[3] = {0.0f, 0.0f, 0.0f};
+  float unit[3];
+  semantics::normalize_n(zero, 3, unit);
+  EXPECT_EQ(unit[0], 0.0f);
+  EXPECT_EQ(unit[1], 0.0f);
+  EXPECT_EQ(unit[2], 0.0f);
 }
 
 }  // namespace

@@ -73,9 +73,7 @@ struct normalize {
     evaluate(x);
     // An infinite component may make NaN (inf * 0); finite ones give a unit vector or 0.
     if (!x.finite_inputs(1)) return;
-    lanes::Interval v[3];
-    frame::to_array(x, 0, v);
-    const float bound = lanes::unit_component_bound(sem::sum_of_squares_n(v, x.components()));
+    constexpr float bound = lanes::unit_length_bound;
     frame::for_components(x.components(), [&](int c) { x.out(c) = lanes::meet(x.out(c), {-bound, bound}); });
   }
 };

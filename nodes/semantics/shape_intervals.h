@@ -124,12 +124,9 @@ inline Interval grid_distance_range(const float* grid, Interval x, Interval y, I
   return widened_by_rounding(blended) + sqrt(outside);
 }
 
-// How far from 0 a component of d / |d| computed in float can lie: 1 up
-// to rounding, or up to sqrt(1.5) where |d|^2 is subnormal (rounded to a
-// multiple of 2^-149, it may be a third smaller than the true sum).
-inline float unit_component_bound(Interval length_squared) {
-  return length_squared.lo >= FLT_MIN ? 1.0f + 1e-6f : 1.25f;
-}
+// How long d / |d| computed in float can be (semantics::normalize_n), and
+// so how far from 0 its components lie: 1 up to rounding.
+inline constexpr float unit_length_bound = 1.0f + 1e-6f;
 
 // x narrowed to centre + [-reach, reach] (centre a finite interval, reach
 // >= 0), with the rounding of computing centre + a value within reach.

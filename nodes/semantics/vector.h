@@ -42,10 +42,20 @@ F length_n(const F* v, int n) {
   return sqrt(sum_of_squares_n(v, n));
 }
 
+// v / |v|, 0 for the zero vector. Where v's squares underflow (|v| below
+// about 2^-63), v is first scaled by 2^126, exactly: their sum, rounded to
+// a multiple of 2^-149 or to 0, would have made the result up to sqrt(1.5)
+// long, or 0 for a vector that is not. So the result is a unit vector to
+// rounding, which interval forms rely on (nodes/ops/interval_lengths.h).
 template <class F>
 void normalize_n(const F* v, int n, F* out) {
-  F inverse = inverse_length_or_zero(sum_of_squares_n(v, n));
-  for (int c = 0; c < n; ++c) out[c] = v[c] * inverse;
+  const F squares = sum_of_squares_n(v, n);
+  const auto tiny = squares < 0x1p-126f;
+  const F scale = select(tiny, splat<F>(0x1p126f), splat<F>(1.0f));
+  F scaled[3];
+  for (int c = 0; c < n; ++c) scaled[c] = v[c] * scale;
+  F inverse = inverse_length_or_zero(select(tiny, sum_of_squares_n(scaled, n), squares));
+  for (int c = 0; c < n; ++c) out[c] = scaled[c] * inverse;
 }
 
 }  // namespace shadetree::semantics
