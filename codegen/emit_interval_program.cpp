@@ -1,9 +1,10 @@
 // ShadeIR -> LLVM IR for interval programs (see emit_interval_program.h).
 //
-// Each value lives in an alloca of three intervals ([3 x [2 x float]]),
-// zeroed on entry, as the interpreter's registers; an op is called with
-// IntervalFrame's planes, arrays of pointers to its arguments' components
-// and to its result's. Once the library is inlined SROA makes the
+// Each value lives in an alloca of its components' intervals and its
+// length's ([4 x [2 x float]], nodes/interval_frame.h), as the
+// interpreter's registers: the components zeroed on entry, the length
+// unknown; an op is called with IntervalFrame's planes, arrays of pointers
+// to its arguments' components and lengths and to its result's. Once the library is inlined SROA makes the
 // registers SSA values. As in the interpreter, the uniform instructions
 // run first (a pass of their own, whose regions may be passed over too),
 // then the varying ones, and only those a bounded output depends on.
@@ -46,7 +47,7 @@ class IntervalEmitter {
     float_ = builder_.getFloatTy();
     ptr_ = builder_.getPtrTy();
     interval_ = llvm::ArrayType::get(float_, 2);
-    register_ = llvm::ArrayType::get(interval_, 3);
+    register_ = llvm::ArrayType::get(interval_, interval_planes_per_value);
   }
 
   Result<llvm::Function*> emit(const std::string& name) {
@@ -59,11 +60,17 @@ class IntervalEmitter {
     llvm::Value* outputs = &*args;
     entry_ = llvm::BasicBlock::Create(module_.getContext(), "entry", function_);
     builder_.SetInsertPoint(entry_);
+    // Components 0, the length unknown (as the interpreter's registers).
+    std::vector<llvm::Constant*> planes(interval_planes_per_value, llvm::ConstantAggregateZero::get(interval_));
+    planes[3] = everything();
+    llvm::Constant* initial = llvm::ConstantArray::get(register_, planes);
+    unknown_length_ = entry_alloca(interval_);
+    builder_.CreateStore(everything(), unknown_length_);
     registers_.assign(ir_.code.size(), nullptr);
     for (std::size_t i = 0; i < ir_.code.size(); ++i) {
       if (!needs_.instructions[i]) continue;
       registers_[i] = entry_alloca(register_);
-      builder_.CreateStore(llvm::ConstantAggregateZero::get(register_), registers_[i]);
+      builder_.CreateStore(initial, registers_[i]);
     }
     for (bool uniform_pass : {true, false})
       if (Status status = emit_pass(uniform_pass); !status) return status.error();
@@ -132,13 +139,9 @@ class IntervalEmitter {
         builder_.CreateStore(builder_.CreateLoad(interval_, component(instr.args[0], instr.immediate[0])),
                              component(self, 0));
         return success();
-      case IrOpKind::partials: {
-        const double infinity = std::numeric_limits<double>::infinity();
-        llvm::Constant* everything = llvm::ConstantArray::get(
-            interval_, {llvm::ConstantFP::get(float_, -infinity), llvm::ConstantFP::get(float_, infinity)});
-        for (int c = 0; c < components; ++c) builder_.CreateStore(everything, component(self, c));
+      case IrOpKind::partials:
+        for (int c = 0; c < components; ++c) builder_.CreateStore(everything(), component(self, c));
         return success();
-      }
       case IrOpKind::begin_region: {
         llvm::Function* may_run = module_.getFunction("st_interval_region_may_run");
         if (!may_run) return failure("codegen: the op library has no interval forms");
@@ -160,24 +163,29 @@ class IntervalEmitter {
 
   // st_<op>_interval(constants, in_planes, out_planes), with the planes
   // as the interpreter binds them: component c of argument a (its last
-  // component repeated) at 3a + c, none for the arguments it lacks.
+  // component repeated) at 4a + c and its length at 4a + 3 (the unknown
+  // one for a scalar read as a vector), none for the arguments it lacks.
   Status emit_op(int self) {
     const IrInstr& instr = ir_.code[static_cast<std::size_t>(self)];
     const std::string symbol = std::string("st_") + op_symbol(instr.op) + "_interval";
     llvm::Function* callee = module_.getFunction(symbol);
     if (!callee) return failure("codegen: the op library has no " + symbol);
-    llvm::Value* in_planes = entry_alloca(llvm::ArrayType::get(ptr_, max_op_args * 3));
+    constexpr int planes = interval_planes_per_value;
+    llvm::Value* in_planes = entry_alloca(llvm::ArrayType::get(ptr_, max_op_args * planes));
     for (int a = 0; a < max_op_args; ++a)
-      for (int c = 0; c < 3; ++c) {
+      for (int c = 0; c < planes; ++c) {
         llvm::Value* plane = llvm::ConstantPointerNull::get(ptr_);
         if (a < instr.arg_count) {
           const int held = component_count(ir_.code[static_cast<std::size_t>(instr.args[a])].type);
-          plane = component(instr.args[a], std::min(c, held - 1));
+          if (c < 3)
+            plane = component(instr.args[a], std::min(c, held - 1));
+          else
+            plane = held == component_count(argument_type(instr, a)) ? component(instr.args[a], c) : unknown_length_;
         }
-        builder_.CreateStore(plane, builder_.CreateConstInBoundsGEP1_32(ptr_, in_planes, static_cast<unsigned>(3 * a + c)));
+        builder_.CreateStore(plane, builder_.CreateConstInBoundsGEP1_32(ptr_, in_planes, static_cast<unsigned>(planes * a + c)));
       }
-    llvm::Value* out_planes = entry_alloca(llvm::ArrayType::get(ptr_, 3));
-    for (int c = 0; c < 3; ++c)
+    llvm::Value* out_planes = entry_alloca(llvm::ArrayType::get(ptr_, planes));
+    for (int c = 0; c < planes; ++c)
       builder_.CreateStore(component(self, c), builder_.CreateConstInBoundsGEP1_32(ptr_, out_planes, static_cast<unsigned>(c)));
     builder_.CreateCall(callee, {constants_.of(instr), in_planes, out_planes});
     return success();
@@ -199,6 +207,12 @@ class IntervalEmitter {
   llvm::Value* load_float(llvm::Value* base, int index) {
     return builder_.CreateLoad(float_, builder_.CreateConstInBoundsGEP1_32(float_, base, static_cast<unsigned>(index)));
   }
+  // [-inf, +inf]: nothing known.
+  llvm::Constant* everything() {
+    const double infinity = std::numeric_limits<double>::infinity();
+    return llvm::ConstantArray::get(interval_,
+                                    {llvm::ConstantFP::get(float_, -infinity), llvm::ConstantFP::get(float_, infinity)});
+  }
   // The point interval [value, value].
   void store_point(int self, int c, llvm::Value* value) {
     llvm::Value* interval = builder_.CreateInsertValue(llvm::PoisonValue::get(interval_), value, 0);
@@ -218,6 +232,7 @@ class IntervalEmitter {
   llvm::BasicBlock* entry_ = nullptr;
   llvm::Value *params_ = nullptr, *uniforms_ = nullptr, *box_ = nullptr;
   std::vector<llvm::AllocaInst*> registers_;
+  llvm::AllocaInst* unknown_length_ = nullptr;
 };
 
 }  // namespace

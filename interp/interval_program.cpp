@@ -1,5 +1,6 @@
 // Interval evaluation of a program (see interval_program.h): one interval
-// register per component of each value; binding computes the uniform
+// register per component of each value and one for its length
+// (nodes/interval_frame.h); binding computes the uniform
 // values, evaluate() the varying ones in program order, ignoring region
 // markers. A dual instruction is bounded by its value alone, and a
 // gradient is not bounded at all.
@@ -51,17 +52,30 @@ BoundIntervalProgram::BoundIntervalProgram(const IntervalProgram& program, const
     return;
   }
   const std::vector<IrInstr>& code = program.ir_.code;
-  registers_.resize(code.size() * 3);
-  in_planes_.resize(code.size() * 3 * max_op_args);
-  out_planes_.resize(code.size() * 3);
+  constexpr int planes = interval_planes_per_value;
+  // A value's length is known only where an op found it; the others' (and
+  // a scalar read as a vector, whose plane is its own) are the unknown,
+  // after the registers.
+  registers_.resize(code.size() * planes + 1);
+  for (std::size_t i = 0; i < code.size(); ++i) registers_[i * planes + 3] = lanes::everything();
+  registers_.back() = lanes::everything();
+  const Interval* unknown_length = &registers_.back();
+  in_planes_.resize(code.size() * planes * max_op_args);
+  out_planes_.resize(code.size() * planes);
   auto plane = [&](std::int32_t value, int component) {
     const int components = component_count(code[static_cast<std::size_t>(value)].type);
-    return &registers_[static_cast<std::size_t>(value) * 3 + static_cast<std::size_t>(std::min(component, components - 1))];
+    return &registers_[static_cast<std::size_t>(value) * planes + static_cast<std::size_t>(std::min(component, components - 1))];
   };
   for (std::size_t i = 0; i < code.size(); ++i) {
-    for (int a = 0; a < code[i].arg_count; ++a)
-      for (int c = 0; c < 3; ++c) in_planes_[(i * max_op_args + a) * 3 + c] = plane(code[i].args[a], c);
-    for (int c = 0; c < 3; ++c) out_planes_[i * 3 + c] = &registers_[i * 3 + c];
+    for (int a = 0; a < code[i].arg_count; ++a) {
+      const std::int32_t value = code[i].args[a];
+      for (int c = 0; c < 3; ++c) in_planes_[(i * max_op_args + a) * planes + c] = plane(value, c);
+      const bool whole = component_count(code[static_cast<std::size_t>(value)].type) ==
+                         component_count(argument_type(code[i], a));
+      in_planes_[(i * max_op_args + a) * planes + 3] =
+          whole ? &registers_[static_cast<std::size_t>(value) * planes + 3] : unknown_length;
+    }
+    for (int c = 0; c < planes; ++c) out_planes_[i * planes + c] = &registers_[i * planes + c];
   }
   execute(/*uniform_pass=*/true, SampleBox{});
   params_ = nullptr;
@@ -72,12 +86,13 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
   for (std::size_t i = 0; i < ir.code.size(); ++i) {
     const IrInstr& instr = ir.code[i];
     if (instr.uniform != uniform_pass || !program_->needed_[i]) continue;
-    Interval* const* out = &out_planes_[i * 3];
+    constexpr int planes = interval_planes_per_value;
+    Interval* const* out = &out_planes_[i * planes];
     const int components = component_count(instr.type);
     switch (instr.kind) {
       case IrOpKind::op:
         program_->kernels_[i](
-            IntervalFrame{{&program_->constants_[i]}, &in_planes_[i * max_op_args * 3], out});
+            IntervalFrame{{&program_->constants_[i]}, &in_planes_[i * max_op_args * planes], out});
         break;
       case IrOpKind::constant:
         for (int c = 0; c < components; ++c) *out[c] = ir.data[instr.data_offset + std::min(c, instr.data_count - 1)];
@@ -92,7 +107,7 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
         break;
       }
       case IrOpKind::extract:
-        *out[0] = *in_planes_[i * max_op_args * 3 + static_cast<std::size_t>(instr.immediate[0])];
+        *out[0] = *in_planes_[i * max_op_args * planes + static_cast<std::size_t>(instr.immediate[0])];
         break;
       case IrOpKind::partials:
         for (int c = 0; c < components; ++c) *out[c] = lanes::everything();
@@ -101,7 +116,7 @@ void BoundIntervalProgram::execute(bool uniform_pass, const SampleBox& box) {
         // A region that no sample of the box takes is passed over: the
         // `if` that joins it takes the other side where its condition is
         // certain, as it then is.
-        if (!region_may_run(*in_planes_[i * max_op_args * 3], instr.immediate[0]))
+        if (!region_may_run(*in_planes_[i * max_op_args * planes], instr.immediate[0]))
           i = static_cast<std::size_t>(instr.immediate[1]);
         break;
       }
@@ -125,7 +140,8 @@ void BoundIntervalProgram::evaluate(const SampleBox& box, Interval* outputs) {
     const int held = component_count(program_->ir_.code[static_cast<std::size_t>(output.value)].type);
     for (int c = 0; c < component_count(output.type); ++c) {
       const Interval value =
-          registers_[static_cast<std::size_t>(output.value) * 3 + static_cast<std::size_t>(std::min(c, held - 1))];
+          registers_[static_cast<std::size_t>(output.value) * interval_planes_per_value +
+                     static_cast<std::size_t>(std::min(c, held - 1))];
       outputs[layout.plane(output.id, c)] = reported_enclosure(value);
     }
   }

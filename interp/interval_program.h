@@ -82,9 +82,11 @@ class BoundIntervalProgram {
   void execute(bool uniform_pass, const SampleBox& box);
 
   const IntervalProgram* program_;
-  std::vector<lanes::Interval> registers_;           // per instruction: 3 components
-  std::vector<const lanes::Interval*> in_planes_;    // per instruction: max_op_args x 3
-  std::vector<lanes::Interval*> out_planes_;         // per instruction: 3
+  // Per instruction: 3 components and a length (interval_planes_per_value);
+  // then the unknown length.
+  std::vector<lanes::Interval> registers_;
+  std::vector<const lanes::Interval*> in_planes_;    // per instruction: max_op_args x 4
+  std::vector<lanes::Interval*> out_planes_;         // per instruction: 4
   const float* params_ = nullptr;                    // during binding only
   std::vector<float> compiled_params_;               // for a compiled program, which reads them each time
   UniformInputs uniforms_;

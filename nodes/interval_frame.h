@@ -16,15 +16,21 @@
 
 namespace shadetree {
 
-// in_planes[3a + c] is component c of argument a (a scalar's one interval
-// repeated), out_planes[c] of the result.
+// in_planes[4a + c] is component c of argument a (a scalar's one
+// interval repeated) and in_planes[4a + 3] what is known of its length,
+// out_planes[c] of the result and out_planes[3] its length (see
+// interval_planes_per_value, nodes/limits.h).
 struct IntervalFrame : FrameConstants {
   using Lane = lanes::Interval;
   const lanes::Interval* const* in_planes;
   lanes::Interval* const* out_planes;
 
-  lanes::Interval in(int a, int c = 0) const { return *in_planes[3 * a + c]; }
+  lanes::Interval in(int a, int c = 0) const { return *in_planes[interval_planes_per_value * a + c]; }
   lanes::Interval& out(int c = 0) const { return *out_planes[c]; }
+  // Bounds on the Euclidean length of a vector argument and of a vector
+  // result (nodes/ops/interval_lengths.h); everything where none is known.
+  lanes::Interval in_length(int a) const { return *in_planes[interval_planes_per_value * a + 3]; }
+  lanes::Interval& out_length() const { return *out_planes[3]; }
 
   // Whether every component of the first `args` arguments is finite.
   bool finite_inputs(int args) const {

@@ -12,5 +12,11 @@ inline constexpr int max_table_entries = 4096;
 inline constexpr int max_image_pixels = 1024 * 1024;
 // Arguments of one op (its inputs), the width of the op ABI (op_frame.h).
 inline constexpr int max_op_args = 6;
+// What an interval program keeps of each value (nodes/interval_frame.h):
+// an interval per component, then a bound on its length where it is a
+// vector. The length knows what the components' box forgets: d / |d| has
+// length 1 wherever its box holds short vectors, and x - k d / |d| is
+// within k of |x|.
+inline constexpr int interval_planes_per_value = 4;
 
 }  // namespace shadetree

@@ -82,17 +82,21 @@ void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_co
   std::vector<float> planes(max_op_args * 3 * lanes), results(3 * lanes);
   const float* in[max_op_args * 3] = {};
   float* out[3] = {&results[0], &results[lanes], &results[2 * lanes]};
-  Interval boxes[max_op_args * 3], enclosures[3];
-  const Interval* box_in[max_op_args * 3] = {};
-  Interval* box_out[3] = {&enclosures[0], &enclosures[1], &enclosures[2]};
+  // The arguments' lengths unknown: only their components' boxes are drawn.
+  constexpr int value_planes = interval_planes_per_value;
+  const Interval unknown_length = lanes::everything();
+  Interval boxes[max_op_args * 3], enclosures[value_planes];
+  const Interval* box_in[max_op_args * value_planes] = {};
+  Interval* box_out[value_planes] = {&enclosures[0], &enclosures[1], &enclosures[2], &enclosures[3]};
   Type types[max_op_args];
   for (int a = 0; a < instr.arg_count; ++a) {
     types[a] = argument_type(instr, a);
     for (int c = 0; c < 3; ++c) {
       const int declared = std::min(c, component_count(types[a]) - 1);
       in[a * 3 + c] = &planes[static_cast<std::size_t>((a * 3 + declared) * lanes)];
-      box_in[a * 3 + c] = &boxes[a * 3 + declared];
+      box_in[a * value_planes + c] = &boxes[a * 3 + declared];
     }
+    box_in[a * value_planes + 3] = &unknown_length;
   }
   ArgumentBoxes source;
   for (int b = 0; b < box_count; ++b) {
@@ -116,6 +120,19 @@ void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_co
         FAIL() << op.name << " over " << type_name(instance) << ", component " << c << ": " << value << " outside "
                << show(enclosures[c]) << "; arguments:" << arguments.str();
       }
+    // A vector result's length plane holds the exact length of each lane's vector.
+    if (constants.components < 2) continue;
+    for (int lane = 0; lane < lanes; ++lane) {
+      double squares = 0.0;
+      for (int c = 0; c < constants.components; ++c) {
+        const double value = results[static_cast<std::size_t>(c * lanes + lane)];
+        squares += value * value;
+      }
+      const double length = std::sqrt(squares);
+      if (length != length) continue;  // a NaN component: the components' enclosures said so above
+      ASSERT_TRUE(enclosures[3].lo <= length && length <= enclosures[3].hi)
+          << op.name << " over " << type_name(instance) << ": length " << length << " outside " << show(enclosures[3]);
+    }
   }
 }
 

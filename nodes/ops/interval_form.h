@@ -5,6 +5,7 @@
 
 #include "nodes/interval_frame.h"
 #include "nodes/ops/evaluated.h"
+#include "nodes/ops/interval_lengths.h"
 
 namespace shadetree {
 
@@ -12,13 +13,17 @@ template <class Op>
 concept OwnIntervalForm = requires(const IntervalFrame& x) { Op::evaluate_interval(x); };
 
 // An op over intervals: its own evaluate_interval where it states one,
-// else its generic evaluate instantiated over intervals.
+// else its generic evaluate instantiated over intervals; then what its
+// arguments' lengths say of its result, and its result's length
+// (nodes/ops/interval_lengths.h).
 template <class Op>
 void evaluate_over_intervals(const IntervalFrame& x) {
   if constexpr (OwnIntervalForm<Op>)
     Op::evaluate_interval(x);
   else
     Op::evaluate(x);
+  interval_lengths::narrow_by_argument_lengths<Op>(x);
+  interval_lengths::record_result_length<Op>(x);
 }
 
 // Whether some sample of the box may run a conditional region on

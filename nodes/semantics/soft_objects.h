@@ -10,18 +10,23 @@ namespace shadetree::semantics {
 using namespace shadetree::lanes;
 
 // 1989 section 2.1: D = 1 for r_x <= r - s/2, 0 for r_x >= r + s/2, and
-// (r0^2 - r_x^2) / (r0^2 - r1^2) between; computed on squared radii.
+// (r0^2 - r_x^2) / (r0^2 - r1^2) between; computed on squared radii, from
+// r_x^2 (which an interval form may know more tightly than p's box does).
 template <class F>
-F soft_sphere(const Vec3<F>& p, const Vec3<F>& center, F radius, F softness) {
-  Vec3<F> d{p.x - center.x, p.y - center.y, p.z - center.z};
+F soft_sphere_at(F distance_squared, F radius, F softness) {
   F inner = max(radius - softness * 0.5f, splat<F>(0.0f));
   F outer = radius + softness * 0.5f;
   F inner_squared = square(inner), outer_squared = square(outer);
-  F distance_squared = length_squared(d);
   F ramp = (outer_squared - distance_squared) / select(outer_squared > inner_squared, outer_squared - inner_squared,
                                                        splat<F>(1.0f));
   return select(distance_squared <= inner_squared, splat<F>(1.0f),
                 select(distance_squared >= outer_squared, splat<F>(0.0f), ramp));
+}
+
+template <class F>
+F soft_sphere(const Vec3<F>& p, const Vec3<F>& center, F radius, F softness) {
+  Vec3<F> d{p.x - center.x, p.y - center.y, p.z - center.z};
+  return soft_sphere_at(length_squared(d), radius, softness);
 }
 
 // Density from a signed distance: 1 at and below -s/2, 0 at and above s/2,
