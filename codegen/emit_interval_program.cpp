@@ -23,6 +23,7 @@
 #include "codegen/emit_kernel.h"
 #include "codegen/op_constant_globals.h"
 #include "codegen/op_library.h"
+#include "ir/interval_lengths_read.h"
 #include "ir/kernel.h"
 #include "ir/output_dependencies.h"
 #include "nodes/limits.h"
@@ -40,6 +41,7 @@ class IntervalEmitter {
                   const std::string& data_symbol)
       : ir_(ir),
         needs_(output_dependencies(ir, bounded)),
+        lengths_read_(interval_lengths_read(ir)),
         layout_(output_layout(ir)),
         module_(module),
         builder_(module.getContext()),
@@ -185,8 +187,12 @@ class IntervalEmitter {
         builder_.CreateStore(plane, builder_.CreateConstInBoundsGEP1_32(ptr_, in_planes, static_cast<unsigned>(planes * a + c)));
       }
     llvm::Value* out_planes = entry_alloca(llvm::ArrayType::get(ptr_, planes));
-    for (int c = 0; c < planes; ++c)
-      builder_.CreateStore(component(self, c), builder_.CreateConstInBoundsGEP1_32(ptr_, out_planes, static_cast<unsigned>(c)));
+    for (int c = 0; c < planes; ++c) {
+      llvm::Value* plane = c < 3 || lengths_read_[static_cast<std::size_t>(self)]
+                               ? component(self, c)
+                               : llvm::ConstantPointerNull::get(ptr_);
+      builder_.CreateStore(plane, builder_.CreateConstInBoundsGEP1_32(ptr_, out_planes, static_cast<unsigned>(c)));
+    }
     builder_.CreateCall(callee, {constants_.of(instr), in_planes, out_planes});
     return success();
   }
@@ -221,6 +227,7 @@ class IntervalEmitter {
 
   const ShadeIR& ir_;
   OutputDependencies needs_;
+  std::vector<char> lengths_read_;  // per instruction: its length is kept (ir/interval_lengths_read.h)
   OutputLayout layout_;
   llvm::Module& module_;
   llvm::IRBuilder<> builder_;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ir/interval_lengths_read.h"
 #include "ir/op_constants.h"
 #include "ir/output_dependencies.h"
 #include "nodes/ops/interval_form.h"
@@ -29,6 +30,7 @@ IntervalProgram::IntervalProgram(ShadeIR ir, const std::vector<OutputId>& bounde
     kernels_[i] = interp::interval_kernel(instr.op);
     constants_[i] = op_constants(ir_, instr);
   }
+  lengths_read_ = interval_lengths_read(ir_);
   OutputDependencies needs = output_dependencies(ir_, bounded);
   needed_ = std::move(needs.instructions);
   bounded_ = std::move(needs.outputs);
@@ -75,7 +77,8 @@ BoundIntervalProgram::BoundIntervalProgram(const IntervalProgram& program, const
       in_planes_[(i * max_op_args + a) * planes + 3] =
           whole ? &registers_[static_cast<std::size_t>(value) * planes + 3] : unknown_length;
     }
-    for (int c = 0; c < planes; ++c) out_planes_[i * planes + c] = &registers_[i * planes + c];
+    for (int c = 0; c < 3; ++c) out_planes_[i * planes + c] = &registers_[i * planes + c];
+    out_planes_[i * planes + 3] = program.lengths_read_[i] ? &registers_[i * planes + 3] : nullptr;
   }
   execute(/*uniform_pass=*/true, SampleBox{});
   params_ = nullptr;

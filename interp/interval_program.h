@@ -61,6 +61,7 @@ class IntervalProgram {
   std::vector<OpConstants> constants_;
   std::vector<char> needed_;  // per instruction: a bounded output depends on it
   std::vector<char> bounded_;  // per output of the IR
+  std::vector<char> lengths_read_;  // per instruction: its length is kept (ir/interval_lengths_read.h)
   IntervalProgramFunction compiled_ = nullptr;
   std::shared_ptr<const void> compiled_code_;
 };

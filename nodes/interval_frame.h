@@ -18,7 +18,7 @@ namespace shadetree {
 
 // in_planes[4a + c] is component c of argument a (a scalar's one
 // interval repeated) and in_planes[4a + 3] what is known of its length,
-// out_planes[c] of the result and out_planes[3] its length (see
+// out_planes[c] of the result and out_planes[3] its length, or null (see
 // interval_planes_per_value, nodes/limits.h).
 struct IntervalFrame : FrameConstants {
   using Lane = lanes::Interval;
@@ -28,8 +28,11 @@ struct IntervalFrame : FrameConstants {
   lanes::Interval in(int a, int c = 0) const { return *in_planes[interval_planes_per_value * a + c]; }
   lanes::Interval& out(int c = 0) const { return *out_planes[c]; }
   // Bounds on the Euclidean length of a vector argument and of a vector
-  // result (nodes/ops/interval_lengths.h); everything where none is known.
+  // result (nodes/ops/interval_lengths.h): an argument's is everything
+  // where none is known, and a result's is kept only where some op reads
+  // it (ir/interval_lengths_read.h; out_planes[3] is null elsewhere).
   lanes::Interval in_length(int a) const { return *in_planes[interval_planes_per_value * a + 3]; }
+  bool keeps_length() const { return out_planes[3] != nullptr; }
   lanes::Interval& out_length() const { return *out_planes[3]; }
 
   // Whether every component of the first `args` arguments is finite.

@@ -108,6 +108,7 @@ void expect_op_encloses_its_lane_form(const OpDef& op, Type instance, int box_co
           planes[static_cast<std::size_t>((a * 3 + c) * lanes + lane)] = source.inside(boxes[a * 3 + c], scalar, lane);
       }
     interp::op_kernel(op.id)(interp::InstructionPlanes{in, out, &constants}, interp::Lanes{nullptr, lanes, true});
+    enclosures[3] = lanes::everything();  // kept by the ops with a length rule only
     interp::interval_kernel(op.id)(IntervalFrame{{&constants}, box_in, box_out});
     for (int c = 0; c < constants.components; ++c)
       for (int lane = 0; lane < lanes; ++lane) {

@@ -50,11 +50,13 @@ inline Interval length_of_components(const Interval* v, int n) {
   return as_computed(lanes::sqrt(semantics::sum_of_squares_n(v, n)));
 }
 
-// Argument a's length: its plane's bound met with its components'.
+// Argument a's length: its plane's bound, which the op that made it met
+// with its components' already, or else its components'.
 inline Interval argument_length(const IntervalFrame& x, int a) {
+  if (!lanes::is_everything(x.in_length(a))) return x.in_length(a);
   Interval v[3];
   frame::to_array(x, a, v);
-  return lanes::meet(x.in_length(a), length_of_components(v, x.arg_components(a)));
+  return length_of_components(v, x.arg_components(a));
 }
 
 // The smallest and the largest magnitude of argument a's components.
@@ -72,8 +74,14 @@ inline Interval triangle(Interval a, Interval b) {
   return as_computed({std::max({0.0f, a.lo - b.hi, b.lo - a.hi}), a.hi + b.hi});
 }
 
-// The length op `Op` gives its vector result, from its arguments; nothing
-// known for the ops without a rule.
+// The ops whose result's length follows from their arguments' more
+// tightly than from the result's components.
+template <class Op>
+inline constexpr bool has_length_rule = std::is_same_v<Op, ops::normalize> || std::is_same_v<Op, ops::neg> ||
+                                        std::is_same_v<Op, ops::mul> || std::is_same_v<Op, ops::add> ||
+                                        std::is_same_v<Op, ops::sub>;
+
+// The length op `Op` gives its vector result, from its arguments.
 template <class Op>
 Interval result_length(const IntervalFrame& x) {
   constexpr int arity = std::is_same_v<Op, ops::normalize> || std::is_same_v<Op, ops::neg> ? 1 : 2;
@@ -90,26 +98,25 @@ Interval result_length(const IntervalFrame& x) {
     const Interval a_parts = component_magnitudes(x, 0), b_parts = component_magnitudes(x, 1);
     return lanes::meet(as_computed({a.lo * b_parts.lo, a.hi * b_parts.hi}),
                        as_computed({b.lo * a_parts.lo, b.hi * a_parts.hi}));
-  } else if constexpr (std::is_same_v<Op, ops::add> || std::is_same_v<Op, ops::sub>) {
-    return triangle(argument_length(x, 0), argument_length(x, 1));
   } else {
-    return lanes::everything();
+    return triangle(argument_length(x, 0), argument_length(x, 1));
   }
 }
 
-// A vector result's length, kept in its plane, and its components met
-// with it; a scalar result's plane says nothing.
+// A vector result's length, where a rule gives it and an op reads it
+// (x.keeps_length()), and its components met with it. Elsewhere its plane
+// keeps saying nothing: a reader takes the length from the components
+// (argument_length), which is all such a plane would have held.
 template <class Op>
 void record_result_length(const IntervalFrame& x) {
-  if (x.components() < 2) {
-    x.out_length() = lanes::everything();
-    return;
+  if constexpr (has_length_rule<Op>) {
+    if (!x.keeps_length() || x.components() < 2) return;
+    Interval v[3];
+    frame::for_components(x.components(), [&](int c) { v[c] = x.out(c); });
+    const Interval length = lanes::meet(result_length<Op>(x), length_of_components(v, x.components()));
+    x.out_length() = length;
+    frame::for_components(x.components(), [&](int c) { x.out(c) = lanes::meet(x.out(c), {-length.hi, length.hi}); });
   }
-  Interval v[3];
-  frame::for_components(x.components(), [&](int c) { v[c] = x.out(c); });
-  const Interval length = lanes::meet(result_length<Op>(x), length_of_components(v, x.components()));
-  x.out_length() = length;
-  frame::for_components(x.components(), [&](int c) { x.out(c) = lanes::meet(x.out(c), {-length.hi, length.hi}); });
 }
 
 // A scalar result that depends on an argument's length, met with what
