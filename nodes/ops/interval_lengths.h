@@ -7,12 +7,12 @@
 // boxes' enclosures found a shell of radius 0.7 + sqrt(3) 0.22 occupied
 // where the density is 0 beyond 0.7 + 0.22.
 //
-// Each op's result that is a vector gets the length its op implies from
-// its arguments' (normalize at most 1, a product at most the product of a
-// length and the other argument's largest component, a sum or difference
-// within the triangle inequality), met with what its components say; its
-// components are then met with that length. length, dot and sphere read
-// their arguments' lengths. The rules bound the exact length of the float
+// A vector result whose length some op reads (ir/interval_lengths_read.h)
+// gets the length its op implies from its arguments' (normalize at most
+// 1, a product at most the product of a length and the other argument's
+// largest component, a sum or difference within the triangle inequality),
+// met with what its components say; its components are then met with
+// that length. length, dot and sphere read their arguments' lengths. The rules bound the exact length of the float
 // vector the lanes hold, widened by what rounding moves a length or a sum
 // of squares computed in float (a few ulp), and by underflow and overflow
 // of the squares.
