@@ -142,8 +142,8 @@ using LightGrids = std::vector<std::optional<TransmittanceGrid>>;
 
 // Statistics of one thread's tiles, added to the totals once per tile.
 struct TileCounts {
-  long rays = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0, shadow_lookups = 0,
-       skipped_samples = 0, kernel_calls = 0, lane_slots = 0;
+  long rays = 0, rays_ended_early = 0, density_samples = 0, gradient_samples = 0, shadow_samples = 0,
+       shadow_lookups = 0, skipped_samples = 0, kernel_calls = 0, lane_slots = 0;
   long long kernel_ns = 0;    // in the kernel calls
   long long gradient_ns = 0;  // of those, in the calls of the gradients (probes or normal kernel)
   std::array<long long, march_stage_count> stage_ns{};  // the march's own, by MarchStage
@@ -262,6 +262,7 @@ class Marcher {
         occupancy_(occupancy),
         grids_(grids),
         options_(options),
+        extrapolation_(std::clamp(options.extrapolation, 0.0f, 1.0f)),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
   // What a pixel's ray sees behind the volume where it meets no object.
@@ -326,6 +327,13 @@ class Marcher {
       for (std::size_t i = first; i < last; ++i) {
         const MarchingRay& ray = rays[i];
         const std::size_t pixel = static_cast<std::size_t>(ray.pixel);
+        // A ray that ended early (with segments left, not yet opaque):
+        // the rest as bright as what it met.
+        if (ray.segment_start() < ray.exit && ray.alpha < 1.0f - options_.termination) {
+          pixels[pixel] = ray.color / ray.alpha;
+          ++counts.rays_ended_early;
+          continue;
+        }
         pixels[pixel] = ray.color;
         if (ray.backdrop && ray.alpha < 1.0f - options_.termination)
           objects.push_back(ObjectSample{ray.pixel, *ray.backdrop, -ray.frame.along, 1.0f - ray.alpha});
@@ -765,7 +773,7 @@ class Marcher {
     if (layout_.provides(OutputId::color))
       for (int c = 0; c < 3; ++c) colors[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
     const std::size_t lights = scene_.lights().size();
-    const float opaque = 1.0f - options_.termination;
+    const float opaque = 1.0f - std::max(options_.termination, extrapolation_);
     std::size_t kept = 0;  // the rays still live, moved to the front as they are found
     for (std::size_t i = 0; i < count; ++i) {
       MarchingRay& ray = *live[i];
@@ -818,6 +826,7 @@ class Marcher {
   const OccupancyGrid* occupancy_;  // null: every sample is marched
   const LightGrids& grids_;
   const VolumeRenderOptions& options_;
+  float extrapolation_;  // a ray ends once it lets through less, the rest of it extrapolated; 0: none
   glm::vec3 background_;
 };
 
@@ -1104,6 +1113,7 @@ class VolumeFrames : public FrameRenderer {
     report.kernel_samples = stats.density_samples + stats.grid_samples;
     report.kernel_seconds = stats.kernel_seconds;
     report.figures = {{"rays", static_cast<double>(stats.rays)},
+                      {"rays_ended_early", static_cast<double>(stats.rays_ended_early)},
                       {"density_samples", static_cast<double>(stats.density_samples)},
                       {"shadow_samples", static_cast<double>(stats.shadow_samples)},
                       {"grid_samples", static_cast<double>(stats.grid_samples)},
@@ -1121,12 +1131,15 @@ class VolumeFrames : public FrameRenderer {
       report.figures.emplace_back(std::string("march_") + march_stage_names[stage] + "_s",
                                   stats.march_stage_seconds[stage]);
     char text[512];
-    int length = std::snprintf(text, sizeof text,
-                               "%dx%d, %ld rays, %ld density samples (%ld for gradients %s in %.3f s, %ld for "
-                               "shadow rays)",
-                               view.width, view.height, stats.rays, stats.density_samples, stats.gradient_samples,
-                               options.normal_kernel ? "exactly" : "by probes", stats.gradient_seconds,
-                               stats.shadow_samples);
+    int length = std::snprintf(text, sizeof text, "%dx%d, %ld rays", view.width, view.height, stats.rays);
+    if (options.extrapolation > 0.0f)
+      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length), " (%ld ended early)",
+                              stats.rays_ended_early);
+    length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
+                            ", %ld density samples (%ld for gradients %s in %.3f s, %ld for shadow rays)",
+                            stats.density_samples, stats.gradient_samples,
+                            options.normal_kernel ? "exactly" : "by probes", stats.gradient_seconds,
+                            stats.shadow_samples);
     if (stats.empty_fraction > 0.0)
       length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
                               stats.empty_space_read
@@ -1221,8 +1234,8 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
   std::atomic<long long> tile_ns{0}, kernel_ns{0}, grid_kernel_ns{0};
   std::atomic<long long> gradient_ns{0};
   std::array<std::atomic<long long>, march_stage_count> stage_ns{};
-  std::atomic<long> rays{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0}, shadow_lookups{0},
-      skipped_samples{0}, kernel_calls{0}, lane_slots{0};
+  std::atomic<long> rays{0}, rays_ended_early{0}, density_samples{0}, gradient_samples{0}, shadow_samples{0},
+      shadow_lookups{0}, skipped_samples{0}, kernel_calls{0}, lane_slots{0};
 
   const auto since = [](std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -1284,6 +1297,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
           }
         if (options.tile_done) options.tile_done(image, tile);
         rays += counts.rays;
+        rays_ended_early += counts.rays_ended_early;
         kernel_ns += counts.kernel_ns;
         for (std::size_t stage = 0; stage < march_stage_count; ++stage) stage_ns[stage] += counts.stage_ns[stage];
         density_samples += counts.density_samples;
@@ -1305,6 +1319,7 @@ Result<Image> render_volume(const Kernel& kernel, const std::vector<float>& para
     for (std::size_t stage = 0; stage < march_stage_count; ++stage)
       stats->march_stage_seconds[stage] = seconds(stage_ns[stage]);
     stats->rays = rays;
+    stats->rays_ended_early = rays_ended_early;
     stats->density_samples = density_samples;
     stats->gradient_samples = gradient_samples;
     stats->gradient_seconds = seconds(gradient_ns);
@@ -1349,8 +1364,10 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   if (request.draft) options.shadow_step = draft_step_factor * reference_step(volume);
   if (request.jitter) options.jitter = true;
   options.shadows = request.shadows;
-  // Exact shadows are the reference marcher: every sample marched.
+  // Exact shadows are the reference marcher: every sample marched, every
+  // ray to its end.
   options.skip_empty_space = request.shadows != ShadowMode::exact;
+  options.extrapolation = request.shadows == ShadowMode::exact ? 0.0f : extrapolated_termination;
   options.empty_space_cache = user_cache_folder("");
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;

@@ -135,13 +135,43 @@ TEST(VolumeDriver, HalvingTheStepChangesLittle) {
 TEST(VolumeDriver, EarlyTerminationChangesNoPixelByMoreThanItsEpsilon) {
   const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
   auto kernel = make_interpreted_kernel(loaded.ir);
-  VolumeRenderOptions full;
+  VolumeRenderOptions early, full;
+  early.extrapolation = full.extrapolation = 0.0f;
   full.termination = 0.0f;
   VolumeRenderStats early_stats, full_stats;
-  const Image early = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, {}, &early_stats);
+  const Image ended = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, early, &early_stats);
   const Image complete = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, full, &full_stats);
-  EXPECT_LE(largest_difference(early, complete), default_termination);
+  EXPECT_LE(largest_difference(ended, complete), default_termination);
   EXPECT_LT(early_stats.density_samples, full_stats.density_samples);
+}
+
+// A ray that ends once it lets through less than the extrapolation takes
+// the rest to be as bright as what it met: its pixel moves by at most the
+// extrapolation times how far the colours behind differ from those in
+// front (here within [0, 1], over black), and it takes fewer samples.
+TEST(VolumeDriver, RaysEndedEarlyChangeNoPixelByMoreThanTheLightLeft) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  VolumeRenderOptions full;
+  full.extrapolation = 0.0f;
+  full.termination = 0.0f;
+  VolumeRenderStats ended_stats, full_stats;
+  const Image ended = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, {}, &ended_stats);
+  const Image complete = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, full, &full_stats);
+  EXPECT_LE(largest_difference(ended, complete), extrapolated_termination);
+  EXPECT_LT(ended_stats.density_samples, full_stats.density_samples);
+}
+
+// Through a medium of one colour, what a ray met is that colour, and so is
+// its pixel where it ended early, however dark the background behind.
+TEST(VolumeDriver, ARayEndedEarlyInAMediumOfOneColourIsThatColour) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": [0.2, 0.5, 0.8])");
+  const Image image = render(*make_interpreted_kernel(loaded.ir), loaded, looking_down_z(Lighting::none),
+                             unit_box(0.01f), 9);
+  const float* centre = image.pixels.data() + (static_cast<std::size_t>(4) * 9 + 4) * 3;
+  EXPECT_FLOAT_EQ(centre[0], 0.2f);
+  EXPECT_FLOAT_EQ(centre[1], 0.5f);
+  EXPECT_FLOAT_EQ(centre[2], 0.8f);
 }
 
 // Each ray's arithmetic depends only on the ray (and each light ray of a
@@ -649,8 +679,9 @@ TEST(VolumeDriver, ASequenceBoundsItsEmptySpaceOnceWhereSkippingWouldNotPay) {
 // gallery that stand for the others (fur, hard noisy surfaces, glass, a
 // cloud over opaque objects; docs/architecture.md has the figures of
 // every one at 256x256): the grid's light rays march what the shadow rays
-// march, and lose only detail finer than their spacing. Mean and 99th
-// percentile of the per-channel difference, in 8-bit steps.
+// march, and lose only detail finer than their spacing; the cached
+// render's rays also end early. Mean and 99th percentile of the
+// per-channel difference, in 8-bit steps.
 TEST(VolumeDriver, CachedShadowsAgreeWithExactOnes) {
   for (const char* name : {"furry_donut", "noisy_sphere_hiamp", "fractal_sphere", "blue_glass", "cloud_over_floor"}) {
     const std::string file = SHADETREE_SOURCE_DIR "/graphs/" + std::string(name) + ".json";
@@ -661,6 +692,7 @@ TEST(VolumeDriver, CachedShadowsAgreeWithExactOnes) {
     const SceneDesc desc = volume_scene(loaded->graph->render.scene);
     VolumeRenderOptions exact, cached;
     exact.shadows = ShadowMode::exact;
+    exact.extrapolation = 0.0f;  // as `render --shadows exact` marches
     const VolumeDesc& volume = *loaded->graph->render.volume;
     const Image a = render(**compiled, *loaded, desc, volume, 128, exact);
     const Image b = render(**compiled, *loaded, desc, volume, 128, cached);

@@ -1198,7 +1198,11 @@ try {
                 `from the server ${figure(cpuDrag)}`);
     // A volume marched by the GPU (the GLSL marcher) against the server's
     // full preview (the GPU box is off now): fireball has no shadows, so
-    // both march the same samples.
+    // both march the same samples, but the server's rays end once they let
+    // through less than 1/64 and take the rest to be as bright as what they
+    // met (the GLSL marcher is the reference one, `--shadows exact`; see
+    // extrapolated_termination in render/volume_driver.h). That moves a
+    // pixel by at most 1/64 of the fireball's brightest colour, 1.4: 5.6 of 255.
     const previewsBeforeFireball = await gpuPage.evaluate(() => window.shadetreeEditor.state.previews);
     await gpuPage.evaluate(() => window.shadetreeEditor.open("fireball.json"));
     // Its first picture is a draft, then the full one.
@@ -1220,7 +1224,8 @@ try {
       fireballLargest = Math.max(fireballLargest, difference);
       fireballSum += difference;
     }
-    assert.ok(fireballLargest <= 1, `GPU and CPU previews of fireball within one level of 255 (largest difference ${fireballLargest})`);
+    assert.ok(fireballLargest <= 6, `GPU and CPU previews of fireball within 6 levels of 255 (largest difference ${fireballLargest})`);
+    assert.ok(fireballSum / fireballCpu.length <= 1, `GPU and CPU previews of fireball within one level of 255 on average (mean ${fireballSum / fireballCpu.length})`);
     assert.ok(new Set(fireballGpu).size > 64, "the fireball is drawn, not a blank");
     console.log(`fireball.json on the page's GPU: differs from the server's by at most ${fireballLargest} of 255 ` +
                 `(mean ${(fireballSum / fireballCpu.length).toFixed(4)}); ${await info()}`);
