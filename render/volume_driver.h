@@ -46,8 +46,8 @@ inline constexpr float default_termination = 1.0f / 512.0f;
 // be as bright as what it met: its colour over its alpha. That changes a
 // pixel by at most this times how far the colour behind differs from the
 // colour in front, and saves the samples of its last two optical depths
-// (from 1/64 to 1/512 of the light left): a ninth of the furry volumes'
-// samples (docs/architecture.md, "Rays ended early").
+// (from 1/64 to 1/512 of the light left): an eighth to a sixth of the
+// furry volumes' samples (docs/architecture.md, "Rays ended early").
 inline constexpr float extrapolated_termination = 1.0f / 64.0f;
 
 struct VolumeRenderOptions {
