@@ -368,8 +368,9 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
   command
       ->add_option("--shadows", arguments->shadows,
                    "volume graphs: cached (default: each light's transmittance read from a grid marched once per "
-                   "frame, empty space skipped, rays ended once 1/64 of the light gets through), exact (a shadow ray "
-                   "from every shaded sample, every ray to its end: the reference) or off; surface graphs: "
+                   "frame, empty space skipped, rays ended once 1/64 of the light gets through, faint samples' "
+                   "gradients not probed), exact (a shadow ray from every shaded sample, every ray to its end, every "
+                   "gradient probed: the reference) or off; surface graphs: "
                    "exact (their shadow rays always are) or off")
       ->check(CLI::IsMember({"cached", "exact", "off"}));
   command->add_flag("--no-shadows", arguments->no_shadows, "surface and volume graphs: --shadows off")

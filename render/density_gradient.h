@@ -5,6 +5,7 @@
 // evaluations, not three, because the sample before is already known.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace shadetree {
@@ -27,5 +28,13 @@ struct GradientSamples {
 };
 
 glm::vec3 density_gradient(const RayFrame& frame, const GradientSamples& samples);
+
+// The density's slopes across the ray (along across_v and across_w) that
+// probes `probe` off it give, and the gradient from the slope along the
+// ray (from the sample before) and those across it: a faint sample of the
+// march takes the slopes across its ray that the ray's last probed sample
+// found.
+glm::vec2 across_slopes(float here, float toward_v, float toward_w, float probe);
+glm::vec3 density_gradient(const RayFrame& frame, float along_slope, const glm::vec2& across);
 
 }  // namespace shadetree

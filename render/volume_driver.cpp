@@ -62,6 +62,10 @@ struct MarchingRay {
   LightSeen* lights_seen = nullptr;
   bool sees_lights = false;  // lights_seen holds the directional lights along `frame`
   float ior = 1.0f;  // the refractive index the ray is travelling through
+  // The density's slopes across the ray at its last probed sample, which
+  // its faint samples take (VolumeRenderOptions::faint_normals).
+  glm::vec2 across_slopes{0.0f};
+  bool probed = false;  // along `frame`, since the ray set out or last bent
   int pixel = 0;  // in the tile
   std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
 
@@ -219,6 +223,7 @@ struct StepSamples {
   std::vector<glm::vec3> at, normal;
   std::vector<float> density, opacity;  // opacity in [0, 1]
   std::vector<std::size_t> soft;        // the samples lit by their normal
+  std::vector<std::size_t> probed;      // of those (as indices into soft), the ones probed
   std::vector<float> transmittance;     // lights per sample
   std::vector<ShadowRay> shadow_rays;
 };
@@ -263,6 +268,8 @@ class Marcher {
         grids_(grids),
         options_(options),
         extrapolation_(std::clamp(options.extrapolation, 0.0f, 1.0f)),
+        // A refracting ray bends about its normals: all of them probed.
+        faint_normals_(refracts_ ? 0.0f : options.faint_normals),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
 
   // What a pixel's ray sees behind the volume where it meets no object.
@@ -538,6 +545,7 @@ class Marcher {
     ray.occupied_until = -std::numeric_limits<float>::infinity();
     ray.frame = ray_frame(bent / length);
     ray.sees_lights = false;
+    ray.probed = false;
     ray.entry = 0.0f;
     ray.backdrop = first_object(Ray{origin, bent / length}, 0.0f);
     ray.exit = std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f);
@@ -682,31 +690,45 @@ class Marcher {
   }
 
   // 1989 section 3.1: the gradient from the previous sample along the ray
-  // and two probes off it (render/density_gradient.h).
+  // and two probes off it (render/density_gradient.h); a faint sample
+  // takes its slopes across the ray from the ray's last probed sample
+  // (VolumeRenderOptions::faint_normals).
   void probed_normals(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
     StepSamples& step = scratch.step;
     if (step.soft.empty()) return;
-    Batch& probes = scratch.probes;
-    const Planes3 points(probes.inputs, GlobalId::P), views(probes.inputs, GlobalId::I);
-    for (std::size_t k = 0; k < step.soft.size(); ++k) {
-      const MarchingRay& ray = *live[step.soft[k]];
-      const glm::vec3& x = step.at[step.soft[k]];
-      points.store(2 * k, x + step_ * ray.frame.across_v);
-      points.store(2 * k + 1, x + step_ * ray.frame.across_w);
-      views.store(2 * k, ray.frame.along);
-      views.store(2 * k + 1, ray.frame.along);
-    }
-    const long long kernel_ns_before = scratch.counts.kernel_ns;
-    run(probes, 2 * step.soft.size(), scratch);
-    scratch.counts.gradient_ns += scratch.counts.kernel_ns - kernel_ns_before;
-    scratch.counts.gradient_samples += static_cast<long>(2 * step.soft.size());
-    const float* probed = probes.outputs.plane(layout_.plane(OutputId::density));
+    step.probed.clear();
     for (std::size_t k = 0; k < step.soft.size(); ++k) {
       const std::size_t i = step.soft[k];
       const MarchingRay& ray = *live[i];
-      const glm::vec3 gradient = density_gradient(
-          ray.frame, GradientSamples{step.density[i], ray.previous_density, std::max(step.t[i] - ray.previous_t, 1e-30f),
-                                     probed[2 * k], probed[2 * k + 1], step_});
+      if (!(ray.probed && step.opacity[i] * (1.0f - ray.alpha) < faint_normals_)) step.probed.push_back(k);
+    }
+    Batch& probes = scratch.probes;
+    const Planes3 points(probes.inputs, GlobalId::P), views(probes.inputs, GlobalId::I);
+    for (std::size_t n = 0; n < step.probed.size(); ++n) {
+      const std::size_t i = step.soft[step.probed[n]];
+      const MarchingRay& ray = *live[i];
+      points.store(2 * n, step.at[i] + step_ * ray.frame.across_v);
+      points.store(2 * n + 1, step.at[i] + step_ * ray.frame.across_w);
+      views.store(2 * n, ray.frame.along);
+      views.store(2 * n + 1, ray.frame.along);
+    }
+    if (!step.probed.empty()) {
+      const long long kernel_ns_before = scratch.counts.kernel_ns;
+      run(probes, 2 * step.probed.size(), scratch);
+      scratch.counts.gradient_ns += scratch.counts.kernel_ns - kernel_ns_before;
+      scratch.counts.gradient_samples += static_cast<long>(2 * step.probed.size());
+    }
+    const float* probed = probes.outputs.plane(layout_.plane(OutputId::density));
+    for (std::size_t n = 0; n < step.probed.size(); ++n) {
+      const std::size_t i = step.soft[step.probed[n]];
+      MarchingRay& ray = *live[i];
+      ray.across_slopes = across_slopes(step.density[i], probed[2 * n], probed[2 * n + 1], step_);
+      ray.probed = true;
+    }
+    for (const std::size_t i : step.soft) {
+      const MarchingRay& ray = *live[i];
+      const float along_slope = (step.density[i] - ray.previous_density) / std::max(step.t[i] - ray.previous_t, 1e-30f);
+      const glm::vec3 gradient = density_gradient(ray.frame, along_slope, ray.across_slopes);
       const float length = glm::length(gradient);
       if (length > 0.0f && std::isfinite(length)) step.normal[i] = -gradient / length;
     }
@@ -827,6 +849,7 @@ class Marcher {
   const LightGrids& grids_;
   const VolumeRenderOptions& options_;
   float extrapolation_;  // a ray ends once it lets through less, the rest of it extrapolated; 0: none
+  float faint_normals_;  // a sample adding less takes its ray's slopes across; 0: every one probed
   glm::vec3 background_;
 };
 
@@ -1368,6 +1391,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   // ray to its end.
   options.skip_empty_space = request.shadows != ShadowMode::exact;
   options.extrapolation = request.shadows == ShadowMode::exact ? 0.0f : extrapolated_termination;
+  options.faint_normals = request.shadows == ShadowMode::exact ? 0.0f : faint_normal_weight;
   options.empty_space_cache = user_cache_folder("");
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;

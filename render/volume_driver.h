@@ -50,6 +50,15 @@ inline constexpr float default_termination = 1.0f / 512.0f;
 // furry volumes' samples (docs/architecture.md, "Rays ended early").
 inline constexpr float extrapolated_termination = 1.0f / 64.0f;
 
+// A render that need not be the reference probes the density's gradient
+// only at samples that add at least this much of a colour to their pixel
+// (their opacity times what their ray still lets through): a fainter one
+// takes the density's slope along its ray from the sample before, as
+// every sample does, and its slopes across the ray from the ray's last
+// probed sample. In fur, where each sample adds little, that leaves out a
+// third of the probes (docs/architecture.md, "Faint samples' normals").
+inline constexpr float faint_normal_weight = 1.0f / 256.0f;
+
 struct VolumeRenderOptions {
   int threads = 0;             // 0: all cores
   float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step); others are checked
@@ -59,6 +68,12 @@ struct VolumeRenderOptions {
   // only at `termination`, over the background or the object behind, as
   // the reference marcher (`--shadows exact`) ends them.
   float extrapolation = extrapolated_termination;
+  // A sample fainter than this (its opacity times what its ray still lets
+  // through) is lit by a normal that takes its slopes across the ray from
+  // the ray's last probed sample, without probes of its own (above); 0:
+  // every sample lit by its normal is probed, as the reference marcher
+  // probes them.
+  float faint_normals = faint_normal_weight;
   ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
   bool skip_empty_space = true;  // where the graph's interval bounds say so (render/occupancy_grid.h)
   // Bound empty space finely even where that is estimated to cost more

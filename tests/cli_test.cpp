@@ -339,11 +339,13 @@ TEST_F(Cli, ShadowModesOfTheRayMarcher) {
       << texture.err;
 }
 
-// --normals exact halves the gradient samples (one sample of the normal
-// kernel instead of two probes); it is for volume graphs only.
+// --normals exact halves the reference marcher's gradient samples (one
+// sample of the normal kernel instead of two probes, where it probes
+// every sample lit); it is for volume graphs only.
 TEST_F(Cli, NormalsOfTheRayMarcher) {
   const std::string out = (directory_ / "sphere.png").string();
-  const std::string render = "render " + gallery + "noisy_sphere.json -o " + out + " --size 24x24 --step 0.05";
+  const std::string render =
+      "render " + gallery + "noisy_sphere.json -o " + out + " --size 24x24 --step 0.05 --shadows exact";
   auto gradient_samples = [](const std::string& err) {
     const auto end = err.find(" for gradients");
     const auto start = err.rfind('(', end);

@@ -523,6 +523,7 @@ TEST(VolumeDriver, ExactNormalsAgreeWithProbesAtHalfTheGradientSamples) {
     const SceneDesc scene = volume_scene(loaded->graph->render.scene);
     const VolumeDesc& volume = *loaded->graph->render.volume;
     VolumeRenderOptions probes, exact;
+    probes.faint_normals = 0.0f;  // every soft sample probed
     exact.normal_kernel = normal_kernel->get();
     VolumeRenderStats probed_stats, exact_stats;
     const Image a = render(**kernel, *loaded, scene, volume, 64, probes, &probed_stats);
@@ -534,6 +535,31 @@ TEST(VolumeDriver, ExactNormalsAgreeWithProbesAtHalfTheGradientSamples) {
     EXPECT_GT(exact_stats.gradient_samples, 0);
     EXPECT_LE(exact_stats.gradient_samples, probed_stats.gradient_samples / 2 + 64 * 64);
   }
+}
+
+// A faint sample takes the slopes across its ray from the ray's last
+// probed sample. Across a linear density they are the same everywhere, so
+// a march whose every sample but a ray's first is faint lights them as
+// probing each would, from two probes a ray.
+TEST(VolumeDriver, FaintSamplesOfALinearDensityAreLitAsIfProbed) {
+  const LoadedGraph loaded = compile_volume(R"({"id": "p", "op": "P"},
+      {"id": "slope", "op": "dot", "in": {"a": "p", "b": [0.05, 0.1, 0.02]}},
+      {"id": "ramp", "op": "add", "in": {"a": "slope", "b": 0.2}})",
+                                            R"("density": "ramp", "color": [1, 1, 1])");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {1.0f, 0.5f, -0.3f};
+  VolumeRenderOptions probing, faint;
+  probing.shadows = faint.shadows = ShadowMode::off;
+  probing.faint_normals = 0.0f;
+  faint.faint_normals = 1.0f;
+  VolumeRenderStats probing_stats, faint_stats;
+  const Image probed = render(*kernel, loaded, desc, unit_box(0.01f), 20, probing, &probing_stats);
+  const Image taken = render(*kernel, loaded, desc, unit_box(0.01f), 20, faint, &faint_stats);
+  EXPECT_LT(largest_difference(probed, taken), 1e-4f);
+  EXPECT_GT(*std::max_element(taken.pixels.begin(), taken.pixels.end()), 0.1f);
+  EXPECT_EQ(faint_stats.gradient_samples, 2 * faint_stats.rays);
+  EXPECT_GT(probing_stats.gradient_samples, 10 * faint_stats.gradient_samples);
 }
 
 // A graph that gives its own normal is lit by it: no gradient samples.
