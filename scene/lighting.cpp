@@ -8,11 +8,6 @@
 
 namespace shadetree {
 
-float specular_exponent(float roughness) {
-  const float r = std::clamp(roughness, 0.02f, 1.0f);
-  return 2.0f / (r * r) - 2.0f;
-}
-
 glm::vec3 direction_to_light(const Light& light, const glm::vec3& point, float* distance) {
   if (light.type == LightType::directional) {
     *distance = std::numeric_limits<float>::infinity();
@@ -53,8 +48,12 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
                        here.distance))
       continue;
     glm::vec3 term = material.color * diffuse;
-    if (material.specular != 0.0f)
-      term += material.specular * std::pow(std::max(0.0f, glm::dot(n, here.half)), exponent);
+    // A half vector at or past 90 degrees (or NaN) adds pow(0, exponent),
+    // +0 but for the exponent 0 of roughness 1, which changes no term: pow
+    // is not called for it.
+    const float facing = std::max(0.0f, glm::dot(n, here.half));
+    if (material.specular != 0.0f && (facing > 0.0f || exponent == 0.0f))
+      term += material.specular * std::pow(facing, exponent);
     result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * term;
   }
   return result;

@@ -5,6 +5,8 @@
 // Rhoades et al. 1992 with deferred shading).
 #pragma once
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -42,7 +44,10 @@ LightSeen light_seen(const Light& light, const glm::vec3& point, const glm::vec3
 
 // Blinn-Phong exponent of a roughness in [0, 1] (2 / r^2 - 2, the
 // exponent whose lobe matches a Beckmann distribution of slope r).
-float specular_exponent(float roughness);
+inline float specular_exponent(float roughness) {
+  const float r = std::clamp(roughness, 0.02f, 1.0f);
+  return 2.0f / (r * r) - 2.0f;
+}
 
 // ambient * color + emission + the sum over lights of
 // radiance * (color * max(0, N.L) + specular * max(0, N.H)^exponent),
