@@ -267,7 +267,9 @@ class Marcher {
         occupancy_(occupancy),
         grids_(grids),
         options_(options),
-        extrapolation_(std::clamp(options.extrapolation, 0.0f, 1.0f)),
+        // At most a half: a ray that ends early has then met at least as
+        // much as it extrapolates, and its alpha is no 0 to divide by.
+        extrapolation_(std::clamp(options.extrapolation, 0.0f, 0.5f)),
         // A refracting ray bends about its normals: all of them probed.
         faint_normals_(refracts_ ? 0.0f : options.faint_normals),
         background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}

@@ -64,9 +64,10 @@ struct VolumeRenderOptions {
   float step = 0.0f;           // 0: the volume's (graph/parse_volume.h: march_step); others are checked
   std::optional<bool> jitter;  // unset: the volume's
   float termination = default_termination;
-  // Where a ray ends early, its rest extrapolated (above); 0: rays end
-  // only at `termination`, over the background or the object behind, as
-  // the reference marcher (`--shadows exact`) ends them.
+  // Where a ray ends early, its rest extrapolated (above; at most a half
+  // is taken); 0: rays end only at `termination`, over the background or
+  // the object behind, as the reference marcher (`--shadows exact`) ends
+  // them.
   float extrapolation = extrapolated_termination;
   // A sample fainter than this (its opacity times what its ray still lets
   // through) is lit by a normal that takes its slopes across the ray from

@@ -160,6 +160,13 @@ TEST(VolumeDriver, RaysEndedEarlyChangeNoPixelByMoreThanTheLightLeft) {
   const Image complete = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, full, &full_stats);
   EXPECT_LE(largest_difference(ended, complete), extrapolated_termination);
   EXPECT_LT(ended_stats.density_samples, full_stats.density_samples);
+  // Asked to end rays that have met nothing yet, the marcher ends them
+  // once they let half the light through: no pixel divides by 0.
+  VolumeRenderOptions at_once;
+  at_once.extrapolation = 1.0f;
+  const Image halves = render(*kernel, loaded, looking_down_z(Lighting::none), unit_box(0.01f), 40, at_once);
+  for (float value : halves.pixels) ASSERT_TRUE(std::isfinite(value));
+  EXPECT_LE(largest_difference(halves, complete), 0.5f);
 }
 
 // Through a medium of one colour, what a ray met is that colour, and so is
