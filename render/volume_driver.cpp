@@ -1155,35 +1155,34 @@ class VolumeFrames : public FrameRenderer {
     for (std::size_t stage = 0; stage < march_stage_count; ++stage)
       report.figures.emplace_back(std::string("march_") + march_stage_names[stage] + "_s",
                                   stats.march_stage_seconds[stage]);
-    char text[512];
-    int length = std::snprintf(text, sizeof text, "%dx%d, %ld rays", view.width, view.height, stats.rays);
-    if (options.extrapolation > 0.0f)
-      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length), " (%ld ended early)",
-                              stats.rays_ended_early);
-    length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                            ", %ld density samples (%ld for gradients %s in %.3f s, %ld for shadow rays)",
-                            stats.density_samples, stats.gradient_samples,
-                            options.normal_kernel ? "exactly" : "by probes", stats.gradient_seconds,
-                            stats.shadow_samples);
+    // The line is formatted a part at a time, each far shorter than `part`.
+    std::string what;
+    char part[256];
+    const auto add = [&](int written) {
+      if (written > 0) what.append(part, std::min(static_cast<std::size_t>(written), sizeof part - 1));
+    };
+    add(std::snprintf(part, sizeof part, "%dx%d, %ld rays", view.width, view.height, stats.rays));
+    if (options.extrapolation > 0.0f) add(std::snprintf(part, sizeof part, " (%ld ended early)", stats.rays_ended_early));
+    add(std::snprintf(part, sizeof part, ", %ld density samples (%ld for gradients %s in %.3f s, %ld for shadow rays)",
+                      stats.density_samples, stats.gradient_samples, options.normal_kernel ? "exactly" : "by probes",
+                      stats.gradient_seconds, stats.shadow_samples));
     if (stats.empty_fraction > 0.0)
-      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              stats.empty_space_read
-                                  ? ", %ld skipped in the %.0f%% of the bounds found empty before (read in %.3f s)"
-                                  : ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
-                              stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds);
+      add(std::snprintf(part, sizeof part,
+                        stats.empty_space_read
+                            ? ", %ld skipped in the %.0f%% of the bounds found empty before (read in %.3f s)"
+                            : ", %ld skipped in the %.0f%% of the bounds found empty in %.3f s",
+                        stats.skipped_samples, 100.0 * stats.empty_fraction, stats.occupancy_seconds));
     else if (known)
-      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              ", no empty space skipped (%s, as an earlier frame found)",
-                              why_not_skipped(declined, 0).c_str());
+      add(std::snprintf(part, sizeof part, ", no empty space skipped (%s, as an earlier frame found)",
+                        why_not_skipped(declined, 0).c_str()));
     else if (options.skip_empty_space)
-      length += std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                              ", no empty space skipped (%s; bounded in %.3f s)",
-                              why_not_skipped(stats.empty_space, stats.samples_saved).c_str(), stats.occupancy_seconds);
+      add(std::snprintf(part, sizeof part, ", no empty space skipped (%s; bounded in %.3f s)",
+                        why_not_skipped(stats.empty_space, stats.samples_saved).c_str(), stats.occupancy_seconds));
     if (stats.grid_bytes > 0)
-      std::snprintf(text + length, sizeof text - static_cast<std::size_t>(length),
-                    ", shadow grids of %.1f MB: %ld samples in %.3f s, %ld lookups", stats.grid_bytes / 1e6,
-                    stats.grid_samples, stats.grid_seconds, stats.shadow_lookups);
-    report.what = text;
+      add(std::snprintf(part, sizeof part, ", shadow grids of %.1f MB: %ld samples in %.3f s, %ld lookups",
+                        stats.grid_bytes / 1e6, stats.grid_samples, stats.grid_seconds, stats.shadow_lookups));
+    report.what = what;
+    char text[512];
     std::snprintf(text, sizeof text,
                   "thread time: kernel %.3f s = %.2f M samples/s, %.1f%% of %d-wide lanes in use, march %.3f s",
                   stats.kernel_seconds,
@@ -1390,7 +1389,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   if (request.jitter) options.jitter = true;
   options.shadows = request.shadows;
   // Exact shadows are the reference marcher: every sample marched, every
-  // ray to its end.
+  // ray to its end, every lit sample probed.
   options.skip_empty_space = request.shadows != ShadowMode::exact;
   options.extrapolation = request.shadows == ShadowMode::exact ? 0.0f : extrapolated_termination;
   options.faint_normals = request.shadows == ShadowMode::exact ? 0.0f : faint_normal_weight;
