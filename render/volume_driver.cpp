@@ -1390,9 +1390,10 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.shadows = request.shadows;
   // Exact shadows are the reference marcher: every sample marched, every
   // ray to its end, every lit sample probed.
-  options.skip_empty_space = request.shadows != ShadowMode::exact;
-  options.extrapolation = request.shadows == ShadowMode::exact ? 0.0f : extrapolated_termination;
-  options.faint_normals = request.shadows == ShadowMode::exact ? 0.0f : faint_normal_weight;
+  const bool reference = request.shadows == ShadowMode::exact;
+  options.skip_empty_space = !reference;
+  options.extrapolation = reference ? 0.0f : extrapolated_termination;
+  options.faint_normals = reference ? 0.0f : faint_normal_weight;
   options.empty_space_cache = user_cache_folder("");
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;
