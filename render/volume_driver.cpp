@@ -43,9 +43,9 @@ constexpr float shadow_weight_cutoff = 1.0f / 64.0f;
 // both density and step-size").
 //
 // Every step reads and writes the fields up to `lights_seen` of every live
-// ray, so they come first, in the first two cache lines; a packet of
-// rays is larger than the first-level cache.
-struct MarchingRay {
+// ray, so they come first, in the first two cache lines (the ray is
+// aligned to one); a packet of rays is larger than the first-level cache.
+struct alignas(64) MarchingRay {
   glm::vec3 origin{0.0f};
   RayFrame frame;  // its unit direction and two perpendiculars
   float entry = 0.0f, exit = 0.0f;
@@ -95,6 +95,18 @@ struct MarchingRay {
   float sample_t() const { return sample_t(segment); }
   glm::vec3 at(float t) const { return origin + t * frame.along; }
 };
+
+// Every stage of a step walks the live rays in turn, a pointer apart
+// (rays that ended leave gaps the hardware's prefetcher does not follow):
+// the first two cache lines of the ray `ahead` of the one at i are
+// fetched while i is worked on.
+void prefetch_ahead(const std::vector<MarchingRay*>& live, std::size_t i) {
+  constexpr std::size_t ahead = 8;
+  if (i + ahead >= live.size()) return;
+  const char* ray = reinterpret_cast<const char*>(live[i + ahead]);
+  __builtin_prefetch(ray);
+  __builtin_prefetch(ray + 64);
+}
 
 // The three planes of a vector global in a batch's inputs, looked up once
 // for a loop over its samples (none where the kernel does not read it).
@@ -226,6 +238,8 @@ struct StepSamples {
   std::vector<std::size_t> probed;      // of those (as indices into soft), the ones probed
   std::vector<float> transmittance;     // lights per sample
   std::vector<ShadowRay> shadow_rays;
+  std::vector<std::size_t> shaded;      // the samples that add to their ray: a segment's, opacity above 0
+  std::vector<glm::vec3> color;         // what each of those adds, lit, before its alpha
 };
 
 // What one tile's march works in: the batches of its kernel calls (march
@@ -272,7 +286,10 @@ class Marcher {
         extrapolation_(std::clamp(options.extrapolation, 0.0f, 0.5f)),
         // A refracting ray bends about its normals: all of them probed.
         faint_normals_(refracts_ ? 0.0f : options.faint_normals),
-        background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]) {}
+        background_(scene.desc().background[0], scene.desc().background[1], scene.desc().background[2]),
+        ambient_(scene.desc().ambient[0], scene.desc().ambient[1], scene.desc().ambient[2]),
+        objects_shadow_(shadows_ && !scene.objects().empty()),
+        exact_specular_(options.exact_specular) {}
 
   // What a pixel's ray sees behind the volume where it meets no object.
   glm::vec3 background(int column, int row) const {
@@ -736,6 +753,67 @@ class Marcher {
     }
   }
 
+  // What each sample of the step that adds to its ray adds, before its
+  // alpha (step.shaded, step.color): the graph's colour (white where it
+  // has none), lit by the scene's lights where the volume is lit.
+  void shade(const std::vector<MarchingRay*>& live, const Batch& samples, StepSamples& step) const {
+    step.shaded.clear();
+    for (std::size_t i = 0; i < live.size(); ++i)
+      if (step.opacity[i] > 0.0f && live[i]->segment >= 0) step.shaded.push_back(i);
+    step.color.resize(step.shaded.size());
+    if (layout_.provides(OutputId::color)) {
+      const float* planes[3];
+      for (int c = 0; c < 3; ++c) planes[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
+      for (std::size_t k = 0; k < step.shaded.size(); ++k)
+        for (int c = 0; c < 3; ++c) step.color[k][c] = planes[c][step.shaded[k]];
+    } else {
+      std::fill(step.color.begin(), step.color.end(), glm::vec3(1.0f));
+    }
+    if (!lit_) return;
+    const std::size_t lights = scene_.lights().size();
+    for (std::size_t k = 0; k < step.shaded.size(); ++k) {
+      const std::size_t i = step.shaded[k];
+      MarchingRay& ray = *live[i];
+      SurfaceMaterial material;
+      material.color = step.color[k];
+      const glm::vec3& normal = step.normal[i];
+      const float* transmittance = step.transmittance.data() + i * lights;
+      const LightSeen* seen = lights_seen_from(ray, step.at[i]);
+      if (!objects_shadow_) {
+        step.color[k] = light_unshadowed_by_objects(material, normal, transmittance, seen);
+        continue;
+      }
+      LitPoint point;
+      point.point = step.at[i];
+      point.shading_normal = normal;
+      point.geometric_normal = normal;
+      point.to_viewer = -ray.frame.along;
+      step.color[k] = light_point(scene_, material, point, shadows_, transmittance, seen);
+    }
+  }
+
+  // light_point where no object can shadow the point, inlined, with the
+  // material's constants taken once: the same terms (light_term), so the
+  // same floats where the lobe's power is libm's.
+  glm::vec3 light_unshadowed_by_objects(const SurfaceMaterial& material, const glm::vec3& normal,
+                                        const float* transmittance, const LightSeen* seen) const {
+    glm::vec3 result = ambient_ * material.color + material.emission;
+    for (std::size_t l = 0; l < scene_.lights().size(); ++l) {
+      const std::optional<glm::vec3> term =
+          exact_specular_ ? light_term(material, normal, normal, seen[l], specular_exponent_,
+                                       [](float base, float power) { return std::pow(base, power); })
+                          : light_term(material, normal, normal, seen[l], specular_exponent_,
+                                       [&](float base, float power) { return approximate_lobe(base, power); });
+      if (term) result += transmittance[l] * scene_.lights()[l].radiance * *term;
+    }
+    return result;
+  }
+
+  // base^power for the specular lobe of a render that need not be the
+  // reference: +0 below the floor where it adds less than 2^-16 of a
+  // light.
+  float approximate_lobe(float base, float power) const { return base < lobe_floor_ ? 0.0f : std::pow(base, power); }
+
   // Every live ray takes its next sample; rays that leave the volume or
   // become opaque are dropped.
   void march_once(std::vector<MarchingRay*>& live, TileScratch& scratch) const {
@@ -750,6 +828,7 @@ class Marcher {
     {
       const Planes3 points(samples.inputs, GlobalId::P), views(samples.inputs, GlobalId::I);
       for (std::size_t i = 0; i < count; ++i) {
+        prefetch_ahead(live, i);
         MarchingRay& ray = *live[i];
         if (occupancy_) skip_empty_space(ray, scratch.counts);
         // From locals: a float stored to a plane could be step.at's, so
@@ -793,35 +872,19 @@ class Marcher {
     light_transmittance(live, scratch);
 
     MarchStageClock shading(scratch.counts, MarchStage::shading);
-    const float* colors[3] = {nullptr, nullptr, nullptr};
-    if (layout_.provides(OutputId::color))
-      for (int c = 0; c < 3; ++c) colors[c] = samples.outputs.plane(layout_.plane(OutputId::color, c));
-    const std::size_t lights = scene_.lights().size();
+    shade(live, samples, step);
     const float opaque = 1.0f - std::max(options_.termination, extrapolation_);
     std::size_t kept = 0;  // the rays still live, moved to the front as they are found
+    std::size_t shaded = 0;  // the next of step.shaded
     for (std::size_t i = 0; i < count; ++i) {
+      prefetch_ahead(live, i);
       MarchingRay& ray = *live[i];
       const float t = step.t[i];
-      const float sample_opacity = step.opacity[i];
-      // Empty space (most samples) adds nothing: no shading, no pow.
-      if (ray.segment >= 0 && sample_opacity > 0.0f) {
-        glm::vec3 color(1.0f);
-        if (colors[0])
-          for (int c = 0; c < 3; ++c) color[c] = colors[c][i];
-        if (lit_) {
-          SurfaceMaterial material;
-          material.color = color;
-          LitPoint point;
-          point.point = step.at[i];
-          point.shading_normal = step.normal[i];
-          point.geometric_normal = step.normal[i];
-          point.to_viewer = -ray.frame.along;
-          // Objects cast shadows into the volume too (shadows_ tests them).
-          color = light_point(scene_, material, point, shadows_, step.transmittance.data() + i * lights,
-                              lights_seen_from(ray, point.point));
-        }
+      // Empty space (most samples) adds nothing.
+      if (shaded < step.shaded.size() && step.shaded[shaded] == i) {
+        const glm::vec3& color = step.color[shaded++];
         // Front to back: t = alpha_k (1 - alpha); color += t color_k.
-        const float alpha = segment_alpha(sample_opacity, ray.segment_length());
+        const float alpha = segment_alpha(step.opacity[i], ray.segment_length());
         if (std::isfinite(color.x + color.y + color.z)) {
           const float weight = alpha * (1.0f - ray.alpha);
           ray.color += weight * color;
@@ -853,6 +916,12 @@ class Marcher {
   float extrapolation_;  // a ray ends once it lets through less, the rest of it extrapolated; 0: none
   float faint_normals_;  // a sample adding less takes its ray's slopes across; 0: every one probed
   glm::vec3 background_;
+  glm::vec3 ambient_;
+  bool objects_shadow_;  // the scene's objects may shadow a sample: light_point's shadow rays
+  bool exact_specular_;  // the lobe's power is libm's, as the reference has it
+  float specular_exponent_ = specular_exponent(SurfaceMaterial{}.roughness);
+  // Where the lobe base^exponent falls below 2^-16 (approximate_lobe).
+  float lobe_floor_ = specular_exponent_ > 0.0f ? std::exp2(-16.0f / specular_exponent_) : 0.0f;
 };
 
 // Empty space is bounded finely (the second level) only where the first
@@ -1394,6 +1463,7 @@ Result<std::unique_ptr<FrameRenderer>> prepare_volume(const Graph& graph, const 
   options.skip_empty_space = !reference;
   options.extrapolation = reference ? 0.0f : extrapolated_termination;
   options.faint_normals = reference ? 0.0f : faint_normal_weight;
+  options.exact_specular = reference;
   options.empty_space_cache = user_cache_folder("");
   options.lane_width = request.lane_width;
   options.cancel = request.cancel;

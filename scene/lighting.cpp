@@ -30,31 +30,23 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
   glm::vec3 result = glm::vec3(scene.desc().ambient[0], scene.desc().ambient[1], scene.desc().ambient[2]) *
                          material.color +
                      material.emission;
-  const glm::vec3& n = point.shading_normal;
   const float exponent = specular_exponent(material.roughness);
   const bool objects_shadow = shadows && !scene.objects().empty();
+  const auto libm_power = [](float base, float power) { return std::pow(base, power); };
   for (std::size_t index = 0; index < scene.lights().size(); ++index) {
     const Light& light = scene.lights()[index];
     const LightSeen here = seen ? seen[index] : light_seen(light, point.point, point.to_viewer);
-    const glm::vec3& l = here.toward;
-    // A light behind the geometric surface cannot reach it, whatever the
-    // perturbed normal says.
-    if (!reaches(n, l) || !reaches(point.geometric_normal, l)) continue;
-    const float diffuse = glm::dot(n, l);
+    const std::optional<glm::vec3> term =
+        light_term(material, point.shading_normal, point.geometric_normal, here, exponent, libm_power);
+    if (!term) continue;
     // Shadow rays start off the surface by an amount that scales with the
     // point's distance from the origin (float spacing grows with it).
     if (objects_shadow &&
-        scene.occluded(Ray{point.point + 1e-4f * (1.0f + glm::length(point.point)) * point.geometric_normal, l}, 0.0f,
-                       here.distance))
+        scene.occluded(Ray{point.point + 1e-4f * (1.0f + glm::length(point.point)) * point.geometric_normal,
+                           here.toward},
+                       0.0f, here.distance))
       continue;
-    glm::vec3 term = material.color * diffuse;
-    // A half vector at or past 90 degrees (or NaN) adds pow(0, exponent),
-    // +0 but for the exponent 0 of roughness 1, which changes no term: pow
-    // is not called for it.
-    const float facing = std::max(0.0f, glm::dot(n, here.half));
-    if (material.specular != 0.0f && (facing > 0.0f || exponent == 0.0f))
-      term += material.specular * std::pow(facing, exponent);
-    result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * term;
+    result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * *term;
   }
   return result;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -49,6 +50,34 @@ inline float specular_exponent(float roughness) {
   return 2.0f / (r * r) - 2.0f;
 }
 
+// Whether light arriving from unit direction `toward_light` reaches a
+// surface of normal `normal` (not from behind it): light_point passes
+// over a light that does not, so no shadow need be found toward it.
+inline bool reaches(const glm::vec3& normal, const glm::vec3& toward_light) {
+  return !(glm::dot(normal, toward_light) <= 0.0f);
+}
+
+// What one light, seen from a point as `here`, adds to it before its
+// radiance and its transmittance: color N.L + specular max(0, N.H)^exponent
+// (Blinn-Phong), the power taken by `power(base, exponent)`; none where the
+// light is behind the surface of `normal` or of `geometric_normal` (a light
+// behind the geometric surface cannot reach it, whatever the perturbed
+// normal says).
+template <class Power>
+std::optional<glm::vec3> light_term(const SurfaceMaterial& material, const glm::vec3& normal,
+                                    const glm::vec3& geometric_normal, const LightSeen& here, float exponent,
+                                    Power power) {
+  if (!reaches(normal, here.toward) || !reaches(geometric_normal, here.toward)) return std::nullopt;
+  glm::vec3 term = material.color * glm::dot(normal, here.toward);
+  // A half vector at or past 90 degrees (or NaN) adds pow(0, exponent),
+  // +0 but for the exponent 0 of roughness 1, which changes no term: the
+  // power is not taken for it.
+  const float facing = std::max(0.0f, glm::dot(normal, here.half));
+  if (material.specular != 0.0f && (facing > 0.0f || exponent == 0.0f))
+    term += material.specular * power(facing, exponent);
+  return term;
+}
+
 // ambient * color + emission + the sum over lights of
 // radiance * (color * max(0, N.L) + specular * max(0, N.H)^exponent),
 // each light's term dropped where a shadow ray finds an object first, and
@@ -57,13 +86,6 @@ inline float specular_exponent(float roughness) {
 // the point sees it, where the caller has it (light_seen).
 glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const LitPoint& point, bool shadows,
                       const float* light_transmittance = nullptr, const LightSeen* seen = nullptr);
-
-// Whether light arriving from unit direction `toward_light` reaches a
-// surface of normal `normal` (not from behind it): light_point passes
-// over a light that does not, so no shadow need be found toward it.
-inline bool reaches(const glm::vec3& normal, const glm::vec3& toward_light) {
-  return !(glm::dot(normal, toward_light) <= 0.0f);
-}
 
 // Unit direction from `point` toward `light`, and the distance to it
 // (infinite for directional lights).

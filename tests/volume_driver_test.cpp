@@ -16,6 +16,7 @@
 #include "pipeline/compile_graph.h"
 #include "render/graph_kinds.h"
 #include "render/volume_driver.h"
+#include "scene/lighting.h"
 #include "support/gallery.h"
 #include "support/graph_text.h"
 #include "support/temp_folder.h"
@@ -179,6 +180,24 @@ TEST(VolumeDriver, ARayEndedEarlyInAMediumOfOneColourIsThatColour) {
   EXPECT_FLOAT_EQ(centre[0], 0.2f);
   EXPECT_FLOAT_EQ(centre[1], 0.5f);
   EXPECT_FLOAT_EQ(centre[2], 0.8f);
+}
+
+// A render that need not be the reference takes no specular lobe below
+// 2^-16 of a light (VolumeRenderOptions::exact_specular): the pixels of a
+// lit sphere move, but by no more than what was left out, 2^-16 of the
+// light's specular share at each sample, whose weights add up to 1.
+TEST(VolumeDriver, LobesLeftOutMoveNoPixelByMoreThanTheirFloor) {
+  const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
+  auto kernel = make_interpreted_kernel(loaded.ir);
+  SceneDesc desc = looking_down_z(Lighting::lit);
+  desc.lights[0].direction = {1.0f, 0.0f, -0.3f};
+  VolumeRenderOptions exact_lobes;
+  exact_lobes.exact_specular = true;
+  const Image reference = render(*kernel, loaded, desc, unit_box(0.01f), 40, exact_lobes);
+  const Image floored = render(*kernel, loaded, desc, unit_box(0.01f), 40);
+  const float moved = largest_difference(reference, floored);
+  EXPECT_GT(moved, 0.0f);
+  EXPECT_LE(moved, SurfaceMaterial{}.specular * std::exp2(-16.0f));
 }
 
 // Each ray's arithmetic depends only on the ray (and each light ray of a
