@@ -72,16 +72,17 @@ struct LightRay {
   }
 
   // Its values from the first above 0 to the last that differs from the
-  // one before, appended to `store` at `offset` (the row's pointer is set
-  // once the store stops growing).
+  // one before, framed by a 0 and the last, appended to `store` at
+  // `offset` (the row's pointer is set once the store stops growing).
   TransmittanceGrid::Row stored_in(std::vector<float>& store, std::size_t& offset) {
     while (gained.size() >= 2 && gained[gained.size() - 1] == gained[gained.size() - 2]) gained.pop_back();
     TransmittanceGrid::Row row;
     row.begin = std::max(first_gained, 0);
     row.end = row.begin + static_cast<int>(gained.size());
-    row.last = gained.empty() ? 0.0f : gained.back();
     offset = store.size();
+    store.push_back(0.0f);
     store.insert(store.end(), gained.begin(), gained.end());
+    store.push_back(gained.empty() ? 0.0f : gained.back());
     return row;
   }
 };
@@ -109,7 +110,9 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
   std::atomic<long> samples{0}, skipped{0};
   const int depth_count = grid.counts_[2];
   const int tiles_across = (grid.counts_[0] + rays_per_side - 1) / rays_per_side;
-  grid.rows_.assign(static_cast<std::size_t>(grid.counts_[0]) * grid.counts_[1], Row{});
+  // A light ray that misses the bounds gains nothing: 0 everywhere.
+  static constexpr float nothing_gained[2] = {0.0f, 0.0f};
+  grid.rows_.assign(static_cast<std::size_t>(grid.counts_[0]) * grid.counts_[1], Row{nothing_gained, 0, 0});
   grid.gained_.resize(static_cast<std::size_t>(tiles_across) * ((grid.counts_[1] + rays_per_side - 1) / rays_per_side));
   Status marched = for_each_tile(
       grid.counts_[0], grid.counts_[1], rays_per_side, spec.threads,
@@ -166,7 +169,7 @@ Result<std::optional<TransmittanceGrid>> TransmittanceGrid::build(const Light& l
                                                  tile.x0 / rays_per_side];
         std::vector<std::size_t> offsets(rays.size());
         for (std::size_t r = 0; r < rays.size(); ++r) grid.rows_[rays[r].row] = rays[r].stored_in(store, offsets[r]);
-        for (std::size_t r = 0; r < rays.size(); ++r) grid.rows_[rays[r].row].gained = store.data() + offsets[r];
+        for (std::size_t r = 0; r < rays.size(); ++r) grid.rows_[rays[r].row].framed = store.data() + offsets[r];
         skipped += tile_skipped;
         samples += tile_samples;
         return tile_samples;
@@ -226,6 +229,7 @@ bool TransmittanceGrid::lay_out(const Light& light, const glm::vec3& lo, const g
     }
   }
   first_ = low;
+  per_spacing_ = 1.0f / spacing_;
   world_spacing_ = spec.spacing * spacing_.x / lateral;
   // Where the light is spent (transmittance below the termination), the
   // depth stops a little past it: finite, so that a lookup between a spent
@@ -256,7 +260,7 @@ std::size_t TransmittanceGrid::bytes() const {
   return rows_.size() * sizeof(Row) + floats * sizeof(float);
 }
 
-std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
+float TransmittanceGrid::at(const glm::vec3& x) const {
   if (perspective_ && !(glm::dot(x - origin_, axis_w_) > 0.0f)) return 1.0f;  // behind the light
   const glm::vec3 c = light_space(x);
   if (!std::isfinite(c.x + c.y + c.z)) return 1.0f;  // a point at no finite place crosses no volume
@@ -264,7 +268,7 @@ std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   int cell[3];
   float weight[3];
   for (int axis = 0; axis < 3; ++axis) {
-    index[axis] = (c[axis] - first_[axis]) / spacing_[axis];
+    index[axis] = (c[axis] - first_[axis]) * per_spacing_[axis];
     // A light ray that passes beside the bounds crosses no volume.
     if (axis < 2 && !(index[axis] > -1.0f && index[axis] < static_cast<float>(counts_[axis]))) return 1.0f;
     index[axis] = std::clamp(index[axis], 0.0f, static_cast<float>(counts_[axis] - 1));
@@ -293,7 +297,7 @@ std::optional<float> TransmittanceGrid::at(const glm::vec3& x) const {
   // bounds without an exp where either factor is small enough: 0.25 is
   // above e^-1.3863 and 1 - e^-0.287.
   if (least < 1.3863f && most - least > 0.287f && std::exp(-least) - std::exp(-most) > max_spread)
-    return std::nullopt;
+    return edge;
   const float transmittance = std::exp(-depth);
   return transmittance < termination_ ? 0.0f : transmittance;
 }

@@ -17,6 +17,7 @@
 // detail finer than the rays' spacing.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -63,14 +64,19 @@ class TransmittanceGrid {
   // stored: the depth is 0 until it meets the volume and stays where it
   // ended once it leaves the volume or is spent. Through a hard surface's
   // volume most of a dense grid held those (stf_bumps: 83 MB), and
-  // writing them took most of the build.
+  // writing them took most of the build. The stored values are framed by
+  // the 0 before them and the last depth after them, so that a lookup
+  // reads any value without a branch.
   struct Row {
-    const float* gained = nullptr;  // values begin .. end - 1
+    const float* framed = nullptr;  // value begin - 1 (0), values begin .. end - 1, value end (the last)
     int begin = 0, end = 0;
-    float last = 0.0f;  // of every value from end on
 
-    float at(int k) const { return k < begin ? 0.0f : k < end ? gained[k - begin] : last; }
+    float at(int k) const { return framed[std::clamp(k, begin - 1, end) - (begin - 1)]; }
   };
+
+  // What `at` returns where the light rays around a point differ by more
+  // than max_spread (a shadow's edge passes between them): no transmittance.
+  static constexpr float edge = -1.0f;
 
   // Moved, never copied: the rows point into the grid's own store.
   TransmittanceGrid() = default;
@@ -87,9 +93,11 @@ class TransmittanceGrid {
                                                         const OpacitySampler& opacity_at);
 
   // The fraction of the light that reaches x through the bounds, from
-  // anywhere, inside or outside them; none where the light rays around x
+  // anywhere, inside or outside them; `edge` where the light rays around x
   // differ by more than max_spread (a shadow's edge passes between them).
-  std::optional<float> at(const glm::vec3& x) const;
+  // A float and not an optional: returned through the stack in two parts
+  // and read back as one, an optional stalled every lookup.
+  float at(const glm::vec3& x) const;
 
   // Between neighbouring light rays, in world units at the bounds' centre.
   float spacing() const { return world_spacing_; }
@@ -114,6 +122,7 @@ class TransmittanceGrid {
   glm::vec3 axis_u_{1.0f, 0.0f, 0.0f}, axis_v_{0.0f, 1.0f, 0.0f}, axis_w_{0.0f, 0.0f, 1.0f};
   glm::vec3 first_{0.0f};    // (u, v, w) of the grid's first value
   glm::vec3 spacing_{1.0f};  // between values, in (u, v, w)
+  glm::vec3 per_spacing_{1.0f};  // 1 / spacing_: a lookup multiplies
   float world_spacing_ = 0.0f;
   int counts_[3] = {0, 0, 0};
   std::vector<Row> rows_;  // u fastest, then v

@@ -454,9 +454,9 @@ class Marcher {
   bool looked_up_the_rest(ShadowRay& ray, TileCounts& counts) const {
     if (!ray.grid || ray.t < ray.lookups_from) return false;
     ++counts.shadow_lookups;
-    const std::optional<float> rest = ray.grid->at(ray.origin + ray.t * ray.direction);
-    if (!rest) return false;
-    ray.transmittance *= *rest;
+    const float rest = ray.grid->at(ray.origin + ray.t * ray.direction);
+    if (rest == TransmittanceGrid::edge) return false;
+    ray.transmittance *= rest;
     return true;
   }
 
@@ -507,10 +507,9 @@ class Marcher {
       if (!reaches(normal, direction_to_light(scene_.lights()[l], point, &distance))) continue;
       if (l < grids_.size() && grids_[l]) {
         ++counts.shadow_lookups;
-        const std::optional<float> looked_up =
-            grids_[l]->at(point + std::max(offset, spacings * grids_[l]->spacing()) * normal);
-        if (looked_up) {
-          transmittance[first + l] = *looked_up;
+        const float looked_up = grids_[l]->at(point + std::max(offset, spacings * grids_[l]->spacing()) * normal);
+        if (looked_up != TransmittanceGrid::edge) {
+          transmittance[first + l] = looked_up;
           continue;
         }
       }
