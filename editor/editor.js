@@ -979,6 +979,9 @@ async function write(path, isNew) {
   if (opened !== state.opened) return false;
   if (error) {
     setStatus(`not saved: ${error}`, true);
+    // A refused Save as keeps its form open, and the refusal beside the
+    // name to change: a preview that ends meanwhile rewrites the status.
+    if (isNew) byId("save-as-error").value = error;
     return false;
   }
   state.path = path;
@@ -1003,6 +1006,7 @@ async function saveAs(name) {
 
 function showSaveAs(shown) {
   byId("save-as-form").hidden = !shown;
+  byId("save-as-error").value = "";
   byId("save-as").hidden = shown;
   if (shown) {
     const input = byId("save-as-name");

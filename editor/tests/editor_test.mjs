@@ -463,9 +463,11 @@ try {
     await page.keyboard.type(name);
     await page.keyboard.press("Enter");
   };
+  // The refusal stays beside the name (a preview ending meanwhile may
+  // rewrite the status line).
   await saveAs("marble");
-  await page.waitForFunction(() => document.getElementById("status").classList.contains("error"), { timeout: 20000 });
-  assert.match(await page.evaluate(() => document.getElementById("status").textContent), /exists/);
+  await page.waitForFunction(() => document.getElementById("save-as-error").value !== "", { timeout: 20000 });
+  assert.match(await page.evaluate(() => document.getElementById("save-as-error").value), /exists/);
   await page.click("#save-as-cancel");
   await saveAs("marble_variant");
   await page.waitForFunction(() => window.shadetreeEditor.state.path === "marble_variant.json", { timeout: 20000 });
