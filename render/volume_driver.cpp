@@ -797,21 +797,19 @@ class Marcher {
   glm::vec3 light_unshadowed_by_objects(const SurfaceMaterial& material, const glm::vec3& normal,
                                         const float* transmittance, const LightSeen* seen) const {
     glm::vec3 result = ambient_ * material.color + material.emission;
-    for (std::size_t l = 0; l < scene_.lights().size(); ++l) {
-      const std::optional<glm::vec3> term =
-          exact_specular_ ? light_term(material, normal, normal, seen[l], specular_exponent_,
-                                       [](float base, float power) { return std::pow(base, power); })
-                          : light_term(material, normal, normal, seen[l], specular_exponent_,
-                                       [&](float base, float power) { return approximate_lobe(base, power); });
-      if (term) result += transmittance[l] * scene_.lights()[l].radiance * *term;
-    }
+    const auto power = [&](float base, float exponent) { return lobe(base, exponent); };
+    for (std::size_t l = 0; l < scene_.lights().size(); ++l)
+      if (const std::optional<glm::vec3> term = light_term(material, normal, normal, seen[l], specular_exponent_, power))
+        result += transmittance[l] * scene_.lights()[l].radiance * *term;
     return result;
   }
 
-  // base^power for the specular lobe of a render that need not be the
-  // reference: +0 below the floor where it adds less than 2^-16 of a
-  // light.
-  float approximate_lobe(float base, float power) const { return base < lobe_floor_ ? 0.0f : std::pow(base, power); }
+  // base^exponent for the specular lobe: libm's powf, as the reference
+  // takes it; for a render that need not be the reference, +0 below the
+  // floor where it adds less than 2^-16 of a light.
+  float lobe(float base, float exponent) const {
+    return !exact_specular_ && base < lobe_floor_ ? 0.0f : std::pow(base, exponent);
+  }
 
   // Every live ray takes its next sample; rays that leave the volume or
   // become opaque are dropped.
@@ -919,7 +917,7 @@ class Marcher {
   bool objects_shadow_;  // the scene's objects may shadow a sample: light_point's shadow rays
   bool exact_specular_;  // the lobe's power is libm's, as the reference has it
   float specular_exponent_ = specular_exponent(SurfaceMaterial{}.roughness);
-  // Where the lobe base^exponent falls below 2^-16 (approximate_lobe).
+  // Where the lobe base^exponent falls below 2^-16 (`lobe`).
   float lobe_floor_ = specular_exponent_ > 0.0f ? std::exp2(-16.0f / specular_exponent_) : 0.0f;
 };
 

@@ -75,9 +75,9 @@ struct VolumeRenderOptions {
   // every sample lit by its normal is probed, as the reference marcher
   // probes them.
   float faint_normals = faint_normal_weight;
-  // The specular lobe's power by libm's powf, to the bit, as the reference
-  // marcher takes it; false: by a polynomial within about 2e-6 of it, and
-  // +0 where the lobe adds less than 2^-16 of a light.
+  // Every specular lobe by libm's powf, as the reference marcher takes
+  // them; false: +0 where the lobe adds less than 2^-16 of a light (no
+  // powf there), powf elsewhere.
   bool exact_specular = false;
   ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
   bool skip_empty_space = true;  // where the graph's interval bounds say so (render/occupancy_grid.h)
