@@ -19,6 +19,7 @@
 #include "render/environment_driver.h"
 #include "schedule/image_tiles.h"
 #include "scene/lighting.h"
+#include "scene/specular_lobe_table.h"
 #include "render/occupancy_grid.h"
 #include "render/occupancy_grid_cache.h"
 #include "render/pixel_hash.h"
@@ -805,10 +806,10 @@ class Marcher {
   }
 
   // base^exponent for the specular lobe: libm's powf, as the reference
-  // takes it; for a render that need not be the reference, +0 below the
-  // floor where it adds less than 2^-16 of a light.
+  // takes it; for a render that need not be the reference, from a table,
+  // +0 below the floor where it adds less than 2^-16 of a light.
   float lobe(float base, float exponent) const {
-    return !exact_specular_ && base < lobe_floor_ ? 0.0f : std::pow(base, exponent);
+    return exact_specular_ ? std::pow(base, exponent) : lobe_table_(base);
   }
 
   // Every live ray takes its next sample; rays that leave the volume or
@@ -917,8 +918,7 @@ class Marcher {
   bool objects_shadow_;  // the scene's objects may shadow a sample: light_point's shadow rays
   bool exact_specular_;  // the lobe's power is libm's, as the reference has it
   float specular_exponent_ = specular_exponent(SurfaceMaterial{}.roughness);
-  // Where the lobe base^exponent falls below 2^-16 (`lobe`).
-  float lobe_floor_ = specular_exponent_ > 0.0f ? std::exp2(-16.0f / specular_exponent_) : 0.0f;
+  SpecularLobeTable lobe_table_{specular_exponent_};  // `lobe` where it need not be powf's
 };
 
 // Empty space is bounded finely (the second level) only where the first

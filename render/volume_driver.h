@@ -76,8 +76,9 @@ struct VolumeRenderOptions {
   // probes them.
   float faint_normals = faint_normal_weight;
   // Every specular lobe by libm's powf, as the reference marcher takes
-  // them; false: +0 where the lobe adds less than 2^-16 of a light (no
-  // powf there), powf elsewhere.
+  // them; false: +0 where the lobe adds less than 2^-16 of a light, and
+  // elsewhere from a table within 2^-17 of powf
+  // (scene/specular_lobe_table.h).
   bool exact_specular = false;
   ShadowMode shadows = ShadowMode::cached;  // and the scene's "shadows" (render/transmittance_grid.h)
   bool skip_empty_space = true;  // where the graph's interval bounds say so (render/occupancy_grid.h)

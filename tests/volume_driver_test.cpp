@@ -183,9 +183,10 @@ TEST(VolumeDriver, ARayEndedEarlyInAMediumOfOneColourIsThatColour) {
 }
 
 // A render that need not be the reference takes no specular lobe below
-// 2^-16 of a light (VolumeRenderOptions::exact_specular): the pixels of a
-// lit sphere move, but by no more than what was left out, 2^-16 of the
-// light's specular share at each sample, whose weights add up to 1.
+// 2^-16 of a light, and the rest from a table within 2^-17 of powf
+// (VolumeRenderOptions::exact_specular): the pixels of a lit sphere move,
+// but by no more than 2^-16 of the light's specular share at each
+// sample, whose weights add up to 1.
 TEST(VolumeDriver, LobesLeftOutMoveNoPixelByMoreThanTheirFloor) {
   const LoadedGraph loaded = compile_volume(soft_sphere, R"("density": "s", "color": "tint")");
   auto kernel = make_interpreted_kernel(loaded.ir);
