@@ -369,8 +369,9 @@ void add_render_command(CLI::App& app, CommandRunner& run) {
       ->add_option("--shadows", arguments->shadows,
                    "volume graphs: cached (default: each light's transmittance read from a grid marched once per "
                    "frame, empty space skipped, rays ended once 1/64 of the light gets through, faint samples' "
-                   "gradients not probed, specular lobes below 2^-16 left out), exact (a shadow ray from every shaded "
-                   "sample, every ray to its end, every gradient probed, every lobe: the reference) or off; surface "
+                   "gradients not probed, specular lobes below 2^-16 left out and the rest read from a table), exact (a "
+                   "shadow ray from every shaded sample, every ray to its end, every gradient probed, every lobe by "
+                   "powf: the reference) or off; surface "
                    "graphs: "
                    "exact (their shadow rays always are) or off")
       ->check(CLI::IsMember({"cached", "exact", "off"}));
