@@ -33,7 +33,36 @@ OccupancyGrid::OccupancyGrid(const glm::vec3& lo, const glm::vec3& hi)
       cell_size_((hi - lo) / static_cast<float>(cells_per_side)),
       cells_per_unit_(1.0f / cell_size_),
       bricks_(static_cast<std::size_t>(bricks_per_side) * bricks_per_side * bricks_per_side, some_brick),
-      cells_(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1) {}
+      cells_(static_cast<std::size_t>(cells_per_side) * cells_per_side * cells_per_side, 1),
+      empty_reach_(bricks_.size(), 0) {}
+
+void OccupancyGrid::reach_across_empty_bricks() {
+  // Erosion by a cube of 3 bricks a side, an axis at a time (past the
+  // bounds counts as empty): a brick that survives k erosions has every
+  // brick within k of it empty.
+  constexpr int side = bricks_per_side;
+  std::vector<std::uint8_t> within(bricks_.size()), eroded(bricks_.size());
+  for (std::size_t b = 0; b < bricks_.size(); ++b) {
+    within[b] = bricks_[b] == empty_brick;
+    empty_reach_[b] = within[b];
+  }
+  for (int reach = 2; reach <= max_empty_reach; ++reach) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::size_t stride = axis == 0 ? 1 : axis == 1 ? side : std::size_t{side} * side;
+      for (std::size_t b = 0; b < bricks_.size(); ++b) {
+        const int at = static_cast<int>(b / stride % side);
+        eroded[b] = within[b] && (at == 0 || within[b - stride]) && (at == side - 1 || within[b + stride]);
+      }
+      within.swap(eroded);
+    }
+    bool any = false;
+    for (std::size_t b = 0; b < bricks_.size(); ++b) {
+      empty_reach_[b] = static_cast<std::uint8_t>(empty_reach_[b] + within[b]);
+      any = any || within[b];
+    }
+    if (!any) break;
+  }
+}
 
 void OccupancyGrid::set_cells(const glm::ivec3& first, int side, std::uint8_t state) {
   for (int k = 0; k < side; ++k)
@@ -98,16 +127,19 @@ Result<std::optional<OccupancyGrid>> OccupancyGrid::build(const glm::vec3& lo, c
   if (!first) return first.error();
   const auto empty = static_cast<double>(std::count(grid.bricks_.begin(), grid.bricks_.end(), empty_brick));
   if (empty < least_empty * static_cast<double>(grid.bricks_.size())) return std::optional<OccupancyGrid>();
+  grid.reach_across_empty_bricks();
   return std::optional<OccupancyGrid>(std::move(grid));
 }
 
 Status OccupancyGrid::refine(const BoxOccupancy& occupied, bool surveyed_bricks, int threads,
                              const std::atomic<bool>* cancel) {
-  return for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
+  Status refined = for_each_brick(threads, cancel, [&](const glm::ivec3& brick) {
     std::uint8_t& state = brick_state(brick);
     if (state != some_brick || surveyed(brick) != surveyed_bricks) return;
     state = refine_octants(occupied, brick * cells_per_brick_side, cells_per_brick_side) ? some_brick : empty_brick;
   });
+  reach_across_empty_bricks();
+  return refined;
 }
 
 glm::ivec3 OccupancyGrid::cell_of(const glm::vec3& point) const {
@@ -122,12 +154,12 @@ bool OccupancyGrid::inside(const glm::vec3& point) const {
 
 bool OccupancyGrid::occupied(const glm::vec3& point) const { return !inside(point) || cell_occupied(cell_of(point)); }
 
-OccupancyGrid::Exit OccupancyGrid::exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin,
+OccupancyGrid::Exit OccupancyGrid::exit_of(const glm::ivec3& first, const glm::ivec3& cells, const glm::vec3& origin,
                                             const glm::vec3& inverse_direction) const {
   Exit exit{std::numeric_limits<float>::infinity(), 0};
   for (int a = 0; a < 3; ++a) {
     if (std::isinf(inverse_direction[a])) continue;  // the ray runs along the faces across this axis
-    const int face = first[a] + (inverse_direction[a] > 0.0f ? cells : 0);
+    const int face = first[a] + (inverse_direction[a] > 0.0f ? cells[a] : 0);
     const float at = (lo_[a] + static_cast<float>(face) * cell_size_[a] - origin[a]) * inverse_direction[a];
     if (at < exit.t) exit = {at, a};
   }
@@ -187,16 +219,20 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
   // (the ray then samples).
   for (int crossings = 0; crossings < 4 * cells_per_side; ++crossings) {
     const glm::ivec3 brick = cell / cells_per_brick_side;
-    const bool brick_empty = bricks_[brick_index(brick)] == empty_brick;
-    const glm::ivec3 box_first = brick * cells_per_brick_side;
-    const auto [exit, axis] = brick_empty ? exit_of(box_first, cells_per_brick_side, origin, inverse) : leaving();
+    const int reach = empty_reach_[brick_index(brick)];
+    const bool brick_empty = reach > 0;
+    // The empty bricks about this one, within the bounds.
+    const glm::ivec3 box_first = glm::max(brick - (reach - 1), glm::ivec3(0)) * cells_per_brick_side;
+    const glm::ivec3 box_cells =
+        (glm::min(brick + (reach - 1), glm::ivec3(bricks_per_side - 1)) + 1) * cells_per_brick_side - box_first;
+    const auto [exit, axis] = brick_empty ? exit_of(box_first, box_cells, origin, inverse) : leaving();
     if (!(exit < end)) return {end, end};
     t = std::max(exit, t);
     glm::ivec3 next = cell;
     if (brick_empty) {
-      // Across the brick's face, in the cell the ray reaches there.
-      next = glm::clamp(cell_of(origin + t * direction), box_first, box_first + (cells_per_brick_side - 1));
-      next[axis] = step[axis] > 0 ? box_first[axis] + cells_per_brick_side : box_first[axis] - 1;
+      // Across the box's face, in the cell the ray reaches there.
+      next = glm::clamp(cell_of(origin + t * direction), box_first, box_first + box_cells - 1);
+      next[axis] = step[axis] > 0 ? box_first[axis] + box_cells[axis] : box_first[axis] - 1;
     } else {
       next[axis] += step[axis];
     }
@@ -263,6 +299,7 @@ std::optional<OccupancyGrid> OccupancyGrid::deserialized(const glm::vec3& lo, co
         if (grid.cell_occupied({x, y, z}) &&
             grid.bricks_[brick_index(glm::ivec3(x, y, z) / cells_per_brick_side)] == empty_brick)
           return std::nullopt;
+  grid.reach_across_empty_bricks();
   return grid;
 }
 

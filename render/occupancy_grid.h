@@ -124,20 +124,30 @@ class OccupancyGrid {
   bool cell_occupied(const glm::ivec3& cell) const {
     return cells_[(static_cast<std::size_t>(cell.z) * cells_per_side + cell.y) * cells_per_side + cell.x] != 0;
   }
-  // Where the ray leaves the box of `cells` cells a side from `first`,
-  // and through a face across which axis (the ray given by its origin and
-  // the inverse of its direction).
+  // Where the ray leaves the box of `cells` cells (along each axis) from
+  // `first`, and through a face across which axis (the ray given by its
+  // origin and the inverse of its direction).
   struct Exit {
     float t;
     int axis;
   };
-  Exit exit_of(const glm::ivec3& first, int cells, const glm::vec3& origin, const glm::vec3& inverse_direction) const;
+  Exit exit_of(const glm::ivec3& first, const glm::ivec3& cells, const glm::vec3& origin,
+               const glm::vec3& inverse_direction) const;
+  // Sets empty_reach_ from the bricks' states; after every change to them.
+  void reach_across_empty_bricks();
 
   glm::vec3 lo_{0.0f}, hi_{0.0f}, cell_size_{1.0f}, cells_per_unit_{1.0f};
   // What a brick holds (BoxContents), as it is kept.
   static constexpr std::uint8_t empty_brick = 0, some_brick = 1, full_brick = 2;
   std::vector<std::uint8_t> bricks_;  // per brick: empty, some (its cells say where) or full
   std::vector<std::uint8_t> cells_;   // per cell of the finest level: 0 empty, 1 occupied
+  // Per brick: 0 where it is not empty, else r >= 1 such that every brick
+  // within r - 1 of it along each axis is empty (or past the bounds), up
+  // to max_empty_reach. The walk crosses that cube of bricks at once: a
+  // ray through the empty space about a small object used to cross it a
+  // brick at a time.
+  static constexpr int max_empty_reach = 8;
+  std::vector<std::uint8_t> empty_reach_;
 };
 
 }  // namespace shadetree
