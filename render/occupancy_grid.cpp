@@ -221,10 +221,13 @@ Clearance OccupancyGrid::next_occupied(const glm::vec3& origin, const glm::vec3&
     const glm::ivec3 brick = cell / cells_per_brick_side;
     const int reach = empty_reach_[brick_index(brick)];
     const bool brick_empty = reach > 0;
-    // The empty bricks about this one, within the bounds.
-    const glm::ivec3 box_first = glm::max(brick - (reach - 1), glm::ivec3(0)) * cells_per_brick_side;
-    const glm::ivec3 box_cells =
-        (glm::min(brick + (reach - 1), glm::ivec3(bricks_per_side - 1)) + 1) * cells_per_brick_side - box_first;
+    // The empty bricks about this one, within the bounds (only an empty
+    // brick's: most crossings are of a cell in a brick that holds some).
+    glm::ivec3 box_first(0), box_cells(0);
+    if (brick_empty) {
+      box_first = glm::max(brick - (reach - 1), glm::ivec3(0)) * cells_per_brick_side;
+      box_cells = (glm::min(brick + (reach - 1), glm::ivec3(bricks_per_side - 1)) + 1) * cells_per_brick_side - box_first;
+    }
     const auto [exit, axis] = brick_empty ? exit_of(box_first, box_cells, origin, inverse) : leaving();
     if (!(exit < end)) return {end, end};
     t = std::max(exit, t);
