@@ -20,13 +20,4 @@ glm::vec3 density_gradient(const RayFrame& frame, const GradientSamples& samples
                           across_slopes(samples.here, samples.toward_v, samples.toward_w, samples.probe));
 }
 
-glm::vec2 across_slopes(float here, float toward_v, float toward_w, float probe) {
-  return {(toward_v - here) / probe, (toward_w - here) / probe};
-}
-
-glm::vec3 density_gradient(const RayFrame& frame, float along_slope, const glm::vec2& across) {
-  // The frame is orthonormal, so its transpose carries the differences back.
-  return along_slope * frame.along + across.x * frame.across_v + across.y * frame.across_w;
-}
-
 }  // namespace shadetree

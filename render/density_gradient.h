@@ -34,7 +34,18 @@ glm::vec3 density_gradient(const RayFrame& frame, const GradientSamples& samples
 // ray (from the sample before) and those across it: a faint sample of the
 // march takes the slopes across its ray that the ray's last probed sample
 // found.
-glm::vec2 across_slopes(float here, float toward_v, float toward_w, float probe);
-glm::vec3 density_gradient(const RayFrame& frame, float along_slope, const glm::vec2& across);
+inline glm::vec2 across_slopes(float here, float toward_v, float toward_w, float probe) {
+  return {(toward_v - here) / probe, (toward_w - here) / probe};
+}
+// The frame is orthonormal, so its transpose carries the differences back.
+// Inline and a component at a time: the march takes it for every lit
+// sample, and GCC's pairs of components (read as one 8-byte load) waited
+// for the stores of single ones.
+inline glm::vec3 density_gradient(const RayFrame& frame, float along_slope, const glm::vec2& across) {
+  glm::vec3 gradient;
+  for (int c = 0; c < 3; ++c)
+    gradient[c] = along_slope * frame.along[c] + across.x * frame.across_v[c] + across.y * frame.across_w[c];
+  return gradient;
+}
 
 }  // namespace shadetree

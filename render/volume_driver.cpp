@@ -748,8 +748,9 @@ class Marcher {
       const MarchingRay& ray = *live[i];
       const float along_slope = (step.density[i] - ray.previous_density) / std::max(step.t[i] - ray.previous_t, 1e-30f);
       const glm::vec3 gradient = density_gradient(ray.frame, along_slope, ray.across_slopes);
-      const float length = glm::length(gradient);
-      if (length > 0.0f && std::isfinite(length)) step.normal[i] = -gradient / length;
+      const float length = std::sqrt(gradient.x * gradient.x + gradient.y * gradient.y + gradient.z * gradient.z);
+      if (length > 0.0f && std::isfinite(length))
+        for (int c = 0; c < 3; ++c) step.normal[i][c] = -gradient[c] / length;
     }
   }
 
@@ -793,15 +794,16 @@ class Marcher {
   }
 
   // light_point where no object can shadow the point, inlined, with the
-  // material's constants taken once: the same terms (light_term), so the
+  // material's constants taken once: the same terms (add_light_term), so the
   // same floats where the lobe's power is libm's.
   glm::vec3 light_unshadowed_by_objects(const SurfaceMaterial& material, const glm::vec3& normal,
                                         const float* transmittance, const LightSeen* seen) const {
     glm::vec3 result = ambient_ * material.color + material.emission;
     const auto power = [&](float base, float exponent) { return lobe(base, exponent); };
     for (std::size_t l = 0; l < scene_.lights().size(); ++l)
-      if (const std::optional<glm::vec3> term = light_term(material, normal, normal, seen[l], specular_exponent_, power))
-        result += transmittance[l] * scene_.lights()[l].radiance * *term;
+      if (lights(normal, normal, seen[l]))
+        add_light_term(material, normal, seen[l], specular_exponent_, power,
+                       transmittance[l] * scene_.lights()[l].radiance, result);
     return result;
   }
 

@@ -36,9 +36,7 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
   for (std::size_t index = 0; index < scene.lights().size(); ++index) {
     const Light& light = scene.lights()[index];
     const LightSeen here = seen ? seen[index] : light_seen(light, point.point, point.to_viewer);
-    const std::optional<glm::vec3> term =
-        light_term(material, point.shading_normal, point.geometric_normal, here, exponent, libm_power);
-    if (!term) continue;
+    if (!lights(point.shading_normal, point.geometric_normal, here)) continue;
     // Shadow rays start off the surface by an amount that scales with the
     // point's distance from the origin (float spacing grows with it).
     if (objects_shadow &&
@@ -46,7 +44,8 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
                            here.toward},
                        0.0f, here.distance))
       continue;
-    result += (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance * *term;
+    add_light_term(material, point.shading_normal, here, exponent, libm_power,
+                   (light_transmittance ? light_transmittance[index] : 1.0f) * light.radiance, result);
   }
   return result;
 }

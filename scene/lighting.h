@@ -6,7 +6,6 @@
 #pragma once
 
 #include <algorithm>
-#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -57,25 +56,31 @@ inline bool reaches(const glm::vec3& normal, const glm::vec3& toward_light) {
   return !(glm::dot(normal, toward_light) <= 0.0f);
 }
 
-// What one light, seen from a point as `here`, adds to it before its
-// radiance and its transmittance: color N.L + specular max(0, N.H)^exponent
-// (Blinn-Phong), the power taken by `power(base, exponent)`; none where the
-// light is behind the surface of `normal` or of `geometric_normal` (a light
-// behind the geometric surface cannot reach it, whatever the perturbed
-// normal says).
+// Whether a light seen as `here` lights a point of shading normal
+// `normal` and geometric normal `geometric_normal`: not from behind either
+// (a light behind the geometric surface cannot reach it, whatever the
+// perturbed normal says).
+inline bool lights(const glm::vec3& normal, const glm::vec3& geometric_normal, const LightSeen& here) {
+  return reaches(normal, here.toward) && reaches(geometric_normal, here.toward);
+}
+
+// Adds to `result` what one light that `lights` the point, seen from it as
+// `here`, adds: `radiance` (the light's, times what reaches the point of
+// it) times color N.L + specular max(0, N.H)^exponent (Blinn-Phong), the
+// power taken by `power(base, exponent)`. A component at a time: the
+// volume marcher adds every shaded sample's lights, and GCC's pairs of
+// components there (one 8-byte load) waited for the stores of single ones.
 template <class Power>
-std::optional<glm::vec3> light_term(const SurfaceMaterial& material, const glm::vec3& normal,
-                                    const glm::vec3& geometric_normal, const LightSeen& here, float exponent,
-                                    Power power) {
-  if (!reaches(normal, here.toward) || !reaches(geometric_normal, here.toward)) return std::nullopt;
-  glm::vec3 term = material.color * glm::dot(normal, here.toward);
+void add_light_term(const SurfaceMaterial& material, const glm::vec3& normal, const LightSeen& here, float exponent,
+                    Power power, const glm::vec3& radiance, glm::vec3& result) {
+  const float toward = glm::dot(normal, here.toward);
   // A half vector at or past 90 degrees (or NaN) adds pow(0, exponent),
   // +0 but for the exponent 0 of roughness 1, which changes no term: the
   // power is not taken for it.
   const float facing = std::max(0.0f, glm::dot(normal, here.half));
-  if (material.specular != 0.0f && (facing > 0.0f || exponent == 0.0f))
-    term += material.specular * power(facing, exponent);
-  return term;
+  const float specular =
+      material.specular != 0.0f && (facing > 0.0f || exponent == 0.0f) ? material.specular * power(facing, exponent) : 0.0f;
+  for (int c = 0; c < 3; ++c) result[c] += radiance[c] * (material.color[c] * toward + specular);
 }
 
 // ambient * color + emission + the sum over lights of
