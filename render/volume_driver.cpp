@@ -801,7 +801,7 @@ class Marcher {
     glm::vec3 result = ambient_ * material.color + material.emission;
     const auto power = [&](float base, float exponent) { return lobe(base, exponent); };
     for (std::size_t l = 0; l < scene_.lights().size(); ++l)
-      if (lights(normal, normal, seen[l]))
+      if (lit_by(normal, normal, seen[l]))
         add_light_term(material, normal, seen[l], specular_exponent_, power,
                        transmittance[l] * scene_.lights()[l].radiance, result);
     return result;

@@ -36,7 +36,7 @@ glm::vec3 light_point(const Scene& scene, const SurfaceMaterial& material, const
   for (std::size_t index = 0; index < scene.lights().size(); ++index) {
     const Light& light = scene.lights()[index];
     const LightSeen here = seen ? seen[index] : light_seen(light, point.point, point.to_viewer);
-    if (!lights(point.shading_normal, point.geometric_normal, here)) continue;
+    if (!lit_by(point.shading_normal, point.geometric_normal, here)) continue;
     // Shadow rays start off the surface by an amount that scales with the
     // point's distance from the origin (float spacing grows with it).
     if (objects_shadow &&

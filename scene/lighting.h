@@ -60,11 +60,11 @@ inline bool reaches(const glm::vec3& normal, const glm::vec3& toward_light) {
 // `normal` and geometric normal `geometric_normal`: not from behind either
 // (a light behind the geometric surface cannot reach it, whatever the
 // perturbed normal says).
-inline bool lights(const glm::vec3& normal, const glm::vec3& geometric_normal, const LightSeen& here) {
+inline bool lit_by(const glm::vec3& normal, const glm::vec3& geometric_normal, const LightSeen& here) {
   return reaches(normal, here.toward) && reaches(geometric_normal, here.toward);
 }
 
-// Adds to `result` what one light that `lights` the point, seen from it as
+// Adds to `result` what one light that the point is `lit_by`, seen from it as
 // `here`, adds: `radiance` (the light's, times what reaches the point of
 // it) times color N.L + specular max(0, N.H)^exponent (Blinn-Phong), the
 // power taken by `power(base, exponent)`. A component at a time: the
