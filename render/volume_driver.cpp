@@ -23,6 +23,7 @@
 #include "render/occupancy_grid.h"
 #include "render/occupancy_grid_cache.h"
 #include "render/pixel_hash.h"
+#include "render/ray_lanes.h"
 #include "render/transmittance_grid.h"
 #include "schedule/stage_clock.h"
 #include "schedule/thread_arena.h"
@@ -36,27 +37,15 @@ constexpr int tile_size = 32;
 // remaining transmittance) send no shadow rays.
 constexpr float shadow_weight_cutoff = 1.0f / 64.0f;
 
-// One ray through the volume. Segment k covers t in [entry + k step,
-// min(entry + (k + 1) step, exit)]; its sample lies `jitter` of the way
-// along it (the middle without jitter). Each segment composites with its
-// own length, so a constant density gives exactly the transmittance of
-// the box's thickness whatever the step (1989: opacity is "a function of
-// both density and step-size").
-//
-// Every step reads and writes the fields up to `lights_seen` of every live
-// ray, so they come first, in the first two cache lines (the ray is
-// aligned to one); a packet of rays is larger than the first-level cache.
-struct alignas(64) MarchingRay {
+// What a ray of the march keeps beside its lanes (render/ray_lanes.h):
+// where it sets out, what only some of its samples read, and what it
+// gathered once it ends.
+struct MarchingRay {
+  RayFrame frame;  // its unit direction (its lanes' `along`) and two perpendiculars
   glm::vec3 origin{0.0f};
-  RayFrame frame;  // its unit direction and two perpendiculars
   float entry = 0.0f, exit = 0.0f;
-  float step_length = 0.0f;
   float jitter = 0.5f;
-  int segment = 0;  // the next one; -1: the probe before the entry, for the first gradient
-  float previous_t = 0.0f, previous_density = 0.0f;
-  glm::vec3 color{0.0f};
-  float alpha = 0.0f;
-  float occupied_until = -std::numeric_limits<float>::infinity();  // no need to look for empty space before
+  int first_segment = 0;  // -1: the probe before the entry, for the first gradient
   // Each light as the ray's samples see it: a directional light's is the
   // ray's own, set at its first shaded sample and again after it bends; a
   // point light's is set at each shaded sample.
@@ -69,45 +58,11 @@ struct alignas(64) MarchingRay {
   bool probed = false;  // along `frame`, since the ray set out or last bent
   int pixel = 0;  // in the tile
   std::optional<SceneHit> backdrop;  // the opaque object the ray meets (its march ends there)
-
-  float segment_start(int k) const { return entry + static_cast<float>(k) * step_length; }
-  float segment_length(int k) const { return std::min(step_length, exit - segment_start(k)); }
-  float sample_t(int k) const {
-    return k < 0 ? entry - (1.0f - jitter) * step_length : segment_start(k) + jitter * segment_length(k);
-  }
-  // Moves on to the last segment whose sample lies before `t` (never past
-  // the last segment), as stepping one segment at a time would, and says
-  // how many it passed. Over whole segments the sample moves
-  // monotonically, so the ray first jumps to about where it passes `t`.
-  int advance_to_last_sample_before(float t) {
-    const auto whole_and_before = [&](int k) { return exit - segment_start(k) >= step_length && sample_t(k) < t; };
-    const int first = segment;
-    const float guess = std::min((t - entry) / step_length, (exit - entry) / step_length);
-    if (guess > static_cast<float>(segment) + 2.0f && guess < 1e9f) {
-      int k = static_cast<int>(guess);
-      while (k > segment && !whole_and_before(k)) --k;
-      segment = k;
-    }
-    while (segment_start(segment + 1) < exit && sample_t(segment + 1) < t) ++segment;
-    return segment - first;
-  }
-  float segment_start() const { return segment_start(segment); }
-  float segment_length() const { return segment_length(segment); }
-  float sample_t() const { return sample_t(segment); }
-  glm::vec3 at(float t) const { return origin + t * frame.along; }
+  // Once it has ended: what it gathered, and whether it had segments left.
+  glm::vec3 color{0.0f};
+  float alpha = 0.0f;
+  bool segments_left = false;
 };
-
-// Every stage of a step walks the live rays in turn, a pointer apart
-// (rays that ended leave gaps the hardware's prefetcher does not follow):
-// the first two cache lines of the ray `ahead` of the one at i are
-// fetched while i is worked on.
-void prefetch_ahead(const std::vector<MarchingRay*>& live, std::size_t i) {
-  constexpr std::size_t ahead = 8;
-  if (i + ahead >= live.size()) return;
-  const char* ray = reinterpret_cast<const char*>(live[i + ahead]);
-  __builtin_prefetch(ray);
-  __builtin_prefetch(ray + 64);
-}
 
 // The three planes of a vector global in a batch's inputs, looked up once
 // for a loop over its samples (none where the kernel does not read it).
@@ -233,7 +188,8 @@ constexpr float marched_spacings_before_lookups = 6.0f;
 // and what reaches it of each light.
 struct StepSamples {
   std::vector<float> t;
-  std::vector<glm::vec3> at, normal;
+  std::vector<float> at[3];  // the sample's place, a plane per axis
+  std::vector<glm::vec3> normal;
   std::vector<float> density, opacity;  // opacity in [0, 1]
   std::vector<std::size_t> soft;        // the samples lit by their normal
   std::vector<std::size_t> probed;      // of those (as indices into soft), the ones probed
@@ -241,6 +197,8 @@ struct StepSamples {
   std::vector<ShadowRay> shadow_rays;
   std::vector<std::size_t> shaded;      // the samples that add to their ray: a segment's, opacity above 0
   std::vector<glm::vec3> color;         // what each of those adds, lit, before its alpha
+
+  glm::vec3 point(std::size_t i) const { return {at[0][i], at[1][i], at[2][i]}; }
 };
 
 // What one tile's march works in: the batches of its kernel calls (march
@@ -252,9 +210,11 @@ struct TileScratch {
       : samples(packet, kernel, step),
         probes(2 * packet, kernel, step),
         shadows(packet * std::max<std::size_t>(lights, 1), kernel, step),
+        lanes(step),
         bound(bound),
         normal_bound(normal_bound) {}
   Batch samples, probes, shadows;
+  RayLanes lanes;
   StepSamples step;
   BoundKernel& bound;
   BoundKernel* normal_bound;  // of VolumeRenderOptions::normal_kernel, where there is one
@@ -331,9 +291,8 @@ class Marcher {
         marching.entry = std::max(span->near, 0.0f);
         marching.exit = hit ? std::min(span->far, hit->t) : span->far;
         marching.backdrop = hit;
-        marching.step_length = step_;
         if (jitter_) marching.jitter = unit_float(pixel_hash(column, row, 0));
-        marching.segment = probes_gradients() ? -1 : 0;
+        marching.first_segment = probes_gradients() ? -1 : 0;
       }
     counts.rays += static_cast<long>(rays.size());
     std::vector<LightSeen> lights_seen(rays.size() * lights);
@@ -346,17 +305,21 @@ class Marcher {
         tile_rays, options_.packet_rays > 0 ? static_cast<std::size_t>(options_.packet_rays) : tile_rays);
     TileScratch scratch(packet, lights, kernel_, step_, bound, normal_bound);
     setting_up.reset();
+    RayLanes& lanes = scratch.lanes;
     for (std::size_t first = 0; first < rays.size(); first += packet) {
       const std::size_t last = std::min(rays.size(), first + packet);
-      std::vector<MarchingRay*> live;
-      for (std::size_t i = first; i < last; ++i) live.push_back(&rays[i]);
-      while (!live.empty()) march_once(live, scratch);
+      for (std::size_t i = first; i < last; ++i) {
+        const MarchingRay& ray = rays[i];
+        lanes.add(ray.origin, ray.frame.along, ray.entry, ray.exit, ray.jitter, ray.first_segment,
+                  static_cast<std::uint32_t>(i));
+      }
+      while (!lanes.empty()) march_once(lanes, rays, scratch);
       for (std::size_t i = first; i < last; ++i) {
         const MarchingRay& ray = rays[i];
         const std::size_t pixel = static_cast<std::size_t>(ray.pixel);
         // A ray that ended early (with segments left, not yet opaque):
         // the rest as bright as what it met.
-        if (ray.segment_start() < ray.exit && ray.alpha < 1.0f - options_.termination) {
+        if (ray.segments_left && ray.alpha < 1.0f - options_.termination) {
           pixels[pixel] = ray.color / ray.alpha;
           ++counts.rays_ended_early;
           continue;
@@ -484,11 +447,14 @@ class Marcher {
   // gradient, as without skipping. A refracting graph's empty space is
   // where its index is 1 as well (bound_empty_space), which bends no ray
   // travelling in index 1: such a ray skips it, any other samples it.
-  void skip_empty_space(MarchingRay& ray, TileCounts& counts) const {
-    if (ray.segment < 0 || (refracts_ && bends(ray, 1.0f)) || ray.sample_t() < ray.occupied_until) return;
-    const Clearance clearance = occupancy_->next_occupied(ray.origin, ray.frame.along, ray.sample_t(), ray.exit);
-    ray.occupied_until = clearance.until;
-    counts.skipped_samples += ray.advance_to_last_sample_before(clearance.from);
+  void skip_empty_space(RayLanes& lanes, std::size_t lane, const std::vector<MarchingRay>& rays,
+                        TileCounts& counts) const {
+    const float t = lanes.sample_t(lane);
+    if (lanes.segment[lane] < 0 || t < lanes.occupied_until[lane] || (refracts_ && bends(rays[lanes.record[lane]], 1.0f)))
+      return;
+    const Clearance clearance = occupancy_->next_occupied(lanes.origin_of(lane), lanes.along_of(lane), t, lanes.exit[lane]);
+    lanes.occupied_until[lane] = clearance.until;
+    counts.skipped_samples += lanes.advance_to_last_sample_before(lane, clearance.from);
   }
 
   // What reaches `point` of each light, from `offset` out along its
@@ -543,7 +509,7 @@ class Marcher {
   // the one the ray travels in, the ray bends by Snell's law about the
   // density gradient (or reflects, past the critical angle) and marches on
   // from the sample in its new direction, through the rest of the box.
-  void refract(MarchingRay& ray, float t, const glm::vec3& outward, float ior) const {
+  void refract(RayLanes& lanes, std::size_t lane, MarchingRay& ray, float t, const glm::vec3& outward, float ior) const {
     const glm::vec3 d = ray.frame.along;
     glm::vec3 n = outward;
     float cosine = -glm::dot(n, d);
@@ -557,19 +523,16 @@ class Marcher {
     const float length = glm::length(bent);
     ray.ior = ior;
     if (!(length > 0.0f) || !std::isfinite(length)) return;
-    const glm::vec3 origin = ray.at(t);
+    const glm::vec3 origin = lanes.point(lane, t);
     const std::optional<Span> span = clip_to_box(Ray{origin, bent / length}, lo_, hi_);
     if (!span) return;
-    ray.origin = origin;
-    ray.occupied_until = -std::numeric_limits<float>::infinity();
     ray.frame = ray_frame(bent / length);
     ray.sees_lights = false;
     ray.probed = false;
-    ray.entry = 0.0f;
     ray.backdrop = first_object(Ray{origin, bent / length}, 0.0f);
-    ray.exit = std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f);
     // A probe just behind, for the next gradient, then segments from here.
-    ray.segment = -1;
+    lanes.set_out(lane, origin, ray.frame.along,
+                  std::max(ray.backdrop ? std::min(span->far, ray.backdrop->t) : span->far, 0.0f));
   }
 
   // The graph's kernel (or `bound`, another of the graph's) on the first
@@ -653,14 +616,14 @@ class Marcher {
   // step.transmittance. Shadow rays start two reference steps out along
   // the normal, clear of the sample itself, by a distance that does not
   // change with the march step.
-  void light_transmittance(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+  void light_transmittance(const RayLanes& lanes, TileScratch& scratch) const {
     StepSamples& step = scratch.step;
     const std::size_t lights = scene_.lights().size();
-    step.transmittance.assign(live.size() * lights, 1.0f);
+    step.transmittance.assign(lanes.size() * lights, 1.0f);
     if (!shadows_) return;
     MarchStageClock clock(scratch.counts, MarchStage::shadows);
     step.shadow_rays.clear();
-    for (std::size_t i = 0; i < live.size(); ++i) {
+    for (std::size_t i = 0; i < lanes.size(); ++i) {
       // A faint sample (its opacity per reference step, times what the ray
       // still lets through) is lit unshadowed: in a faint medium (glass,
       // thin smoke) every sample would otherwise send rays through all of
@@ -668,9 +631,8 @@ class Marcher {
       // (What a ray lets through is at most 1, so a faint opacity alone
       // tells, without reading the ray.)
       if (step.opacity[i] < shadow_weight_cutoff) continue;
-      const MarchingRay& ray = *live[i];
-      if (ray.segment < 0 || step.opacity[i] * (1.0f - ray.alpha) < shadow_weight_cutoff) continue;
-      shadow_from(step.at[i], step.normal[i], 2.0f * reference_step_, std::sqrt(2.0f), i * lights,
+      if (lanes.segment[i] < 0 || step.opacity[i] * (1.0f - lanes.alpha[i]) < shadow_weight_cutoff) continue;
+      shadow_from(step.point(i), step.normal[i], 2.0f * reference_step_, std::sqrt(2.0f), i * lights,
                   step.transmittance, step.shadow_rays, scratch.counts);
     }
     march_shadows(step.shadow_rays, step.transmittance, scratch);
@@ -692,14 +654,14 @@ class Marcher {
 
   // The density's exact gradient (graph/derived_normals.h): one sample of
   // the normal kernel per soft sample.
-  void exact_normals(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+  void exact_normals(const RayLanes& lanes, TileScratch& scratch) const {
     StepSamples& step = scratch.step;
     if (step.soft.empty()) return;
     Batch& batch = scratch.probes;
     const Planes3 points(batch.inputs, GlobalId::P), views(batch.inputs, GlobalId::I);
     for (std::size_t k = 0; k < step.soft.size(); ++k) {
-      points.store(k, step.at[step.soft[k]]);
-      views.store(k, live[step.soft[k]]->frame.along);
+      points.store(k, step.point(step.soft[k]));
+      views.store(k, lanes.along_of(step.soft[k]));
     }
     const long long kernel_ns_before = scratch.counts.kernel_ns;
     run(batch, step.soft.size(), scratch, scratch.normal_bound);
@@ -712,22 +674,22 @@ class Marcher {
   // and two probes off it (render/density_gradient.h); a faint sample
   // takes its slopes across the ray from the ray's last probed sample
   // (VolumeRenderOptions::faint_normals).
-  void probed_normals(const std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+  void probed_normals(const RayLanes& lanes, std::vector<MarchingRay>& rays, TileScratch& scratch) const {
     StepSamples& step = scratch.step;
     if (step.soft.empty()) return;
     step.probed.clear();
     for (std::size_t k = 0; k < step.soft.size(); ++k) {
       const std::size_t i = step.soft[k];
-      const MarchingRay& ray = *live[i];
-      if (!(ray.probed && step.opacity[i] * (1.0f - ray.alpha) < faint_normals_)) step.probed.push_back(k);
+      if (!(rays[lanes.record[i]].probed && step.opacity[i] * (1.0f - lanes.alpha[i]) < faint_normals_))
+        step.probed.push_back(k);
     }
     Batch& probes = scratch.probes;
     const Planes3 points(probes.inputs, GlobalId::P), views(probes.inputs, GlobalId::I);
     for (std::size_t n = 0; n < step.probed.size(); ++n) {
       const std::size_t i = step.soft[step.probed[n]];
-      const MarchingRay& ray = *live[i];
-      points.store(2 * n, step.at[i] + step_ * ray.frame.across_v);
-      points.store(2 * n + 1, step.at[i] + step_ * ray.frame.across_w);
+      const MarchingRay& ray = rays[lanes.record[i]];
+      points.store(2 * n, step.point(i) + step_ * ray.frame.across_v);
+      points.store(2 * n + 1, step.point(i) + step_ * ray.frame.across_w);
       views.store(2 * n, ray.frame.along);
       views.store(2 * n + 1, ray.frame.along);
     }
@@ -740,13 +702,14 @@ class Marcher {
     const float* probed = probes.outputs.plane(layout_.plane(OutputId::density));
     for (std::size_t n = 0; n < step.probed.size(); ++n) {
       const std::size_t i = step.soft[step.probed[n]];
-      MarchingRay& ray = *live[i];
+      MarchingRay& ray = rays[lanes.record[i]];
       ray.across_slopes = across_slopes(step.density[i], probed[2 * n], probed[2 * n + 1], step_);
       ray.probed = true;
     }
     for (const std::size_t i : step.soft) {
-      const MarchingRay& ray = *live[i];
-      const float along_slope = (step.density[i] - ray.previous_density) / std::max(step.t[i] - ray.previous_t, 1e-30f);
+      const MarchingRay& ray = rays[lanes.record[i]];
+      const float along_slope =
+          (step.density[i] - lanes.previous_density[i]) / std::max(step.t[i] - lanes.previous_t[i], 1e-30f);
       const glm::vec3 gradient = density_gradient(ray.frame, along_slope, ray.across_slopes);
       const float length = std::sqrt(gradient.x * gradient.x + gradient.y * gradient.y + gradient.z * gradient.z);
       if (length > 0.0f && std::isfinite(length))
@@ -757,10 +720,10 @@ class Marcher {
   // What each sample of the step that adds to its ray adds, before its
   // alpha (step.shaded, step.color): the graph's colour (white where it
   // has none), lit by the scene's lights where the volume is lit.
-  void shade(const std::vector<MarchingRay*>& live, const Batch& samples, StepSamples& step) const {
+  void shade(const RayLanes& lanes, std::vector<MarchingRay>& rays, const Batch& samples, StepSamples& step) const {
     step.shaded.clear();
-    for (std::size_t i = 0; i < live.size(); ++i)
-      if (step.opacity[i] > 0.0f && live[i]->segment >= 0) step.shaded.push_back(i);
+    for (std::size_t i = 0; i < lanes.size(); ++i)
+      if (step.opacity[i] > 0.0f && lanes.segment[i] >= 0) step.shaded.push_back(i);
     step.color.resize(step.shaded.size());
     if (layout_.provides(OutputId::color)) {
       const float* planes[3];
@@ -774,18 +737,18 @@ class Marcher {
     const std::size_t lights = scene_.lights().size();
     for (std::size_t k = 0; k < step.shaded.size(); ++k) {
       const std::size_t i = step.shaded[k];
-      MarchingRay& ray = *live[i];
+      MarchingRay& ray = rays[lanes.record[i]];
       SurfaceMaterial material;
       material.color = step.color[k];
       const glm::vec3& normal = step.normal[i];
       const float* transmittance = step.transmittance.data() + i * lights;
-      const LightSeen* seen = lights_seen_from(ray, step.at[i]);
+      const LightSeen* seen = lights_seen_from(ray, step.point(i));
       if (!objects_shadow_) {
         step.color[k] = light_unshadowed_by_objects(material, normal, transmittance, seen);
         continue;
       }
       LitPoint point;
-      point.point = step.at[i];
+      point.point = step.point(i);
       point.shading_normal = normal;
       point.geometric_normal = normal;
       point.to_viewer = -ray.frame.along;
@@ -815,33 +778,22 @@ class Marcher {
   }
 
   // Every live ray takes its next sample; rays that leave the volume or
-  // become opaque are dropped.
-  void march_once(std::vector<MarchingRay*>& live, TileScratch& scratch) const {
+  // become opaque are dropped (their record takes what they gathered).
+  void march_once(RayLanes& lanes, std::vector<MarchingRay>& rays, TileScratch& scratch) const {
     Batch& samples = scratch.samples;
     StepSamples& step = scratch.step;
-    const std::size_t count = live.size();
+    const std::size_t count = lanes.size();
     std::optional<MarchStageClock> stepping(std::in_place, scratch.counts, MarchStage::stepping);
-    step.t.resize(count);
-    step.at.resize(count);
+    if (occupancy_)
+      for (std::size_t i = 0; i < count; ++i) skip_empty_space(lanes, i, rays, scratch.counts);
+    place_samples(lanes, step);
+    for (int c = 0; c < 3; ++c) {
+      if (samples.inputs.has(GlobalId::P)) std::copy_n(step.at[c].data(), count, samples.inputs.plane(GlobalId::P, c));
+      if (samples.inputs.has(GlobalId::I)) std::copy_n(lanes.along[c].data(), count, samples.inputs.plane(GlobalId::I, c));
+    }
     // The normal faces the viewer where the density has none (below).
     step.normal.resize(count);
-    {
-      const Planes3 points(samples.inputs, GlobalId::P), views(samples.inputs, GlobalId::I);
-      for (std::size_t i = 0; i < count; ++i) {
-        prefetch_ahead(live, i);
-        MarchingRay& ray = *live[i];
-        if (occupancy_) skip_empty_space(ray, scratch.counts);
-        // From locals: a float stored to a plane could be step.at's, so
-        // storing step.at[i] would read it back from memory.
-        const float t = ray.sample_t();
-        const glm::vec3 at = ray.at(t);
-        step.t[i] = t;
-        step.at[i] = at;
-        step.normal[i] = -ray.frame.along;
-        points.store(i, at);
-        views.store(i, ray.frame.along);
-      }
-    }
+    for (std::size_t i = 0; i < count; ++i) step.normal[i] = -lanes.along_of(i);
     run(samples, count, scratch);
     const float* densities = samples.outputs.plane(layout_.plane(OutputId::density));
     step.density.assign(densities, densities + count);
@@ -860,48 +812,71 @@ class Marcher {
       step.soft.clear();
       for (std::size_t i = 0; i < count; ++i)
         if (step.density[i] > 0.0f && step.density[i] < 1.0f && (refracts_ || step.opacity[i] > 0.0f) &&
-            live[i]->segment >= 0)
+            lanes.segment[i] >= 0)
           step.soft.push_back(i);
       if (own_normals_)
         take_normals(samples, layout_, [&](std::size_t k) { return step.soft[k]; }, step);
       else if (scratch.normal_bound)
-        exact_normals(live, scratch);
+        exact_normals(lanes, scratch);
       else
-        probed_normals(live, scratch);
+        probed_normals(lanes, rays, scratch);
     }
-    light_transmittance(live, scratch);
+    light_transmittance(lanes, scratch);
 
     MarchStageClock shading(scratch.counts, MarchStage::shading);
-    shade(live, samples, step);
-    const float opaque = 1.0f - std::max(options_.termination, extrapolation_);
-    std::size_t kept = 0;  // the rays still live, moved to the front as they are found
-    std::size_t shaded = 0;  // the next of step.shaded
-    for (std::size_t i = 0; i < count; ++i) {
-      prefetch_ahead(live, i);
-      MarchingRay& ray = *live[i];
-      const float t = step.t[i];
-      // Empty space (most samples) adds nothing.
-      if (shaded < step.shaded.size() && step.shaded[shaded] == i) {
-        const glm::vec3& color = step.color[shaded++];
-        // Front to back: t = alpha_k (1 - alpha); color += t color_k.
-        const float alpha = segment_alpha(step.opacity[i], ray.segment_length());
-        if (std::isfinite(color.x + color.y + color.z)) {
-          const float weight = alpha * (1.0f - ray.alpha);
-          ray.color += weight * color;
-          ray.alpha += weight;
-        }
-      }
-      ray.previous_t = t;
-      ray.previous_density = step.density[i];
-      ++ray.segment;
-      if (refracts_ && ray.segment > 0) {
-        const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
-        if (bends(ray, ior)) refract(ray, t, step.normal[i], ior);
-      }
-      const bool done = ray.segment_start() >= ray.exit || ray.alpha >= opaque;
-      if (!done) live[kept++] = &ray;
+    shade(lanes, rays, samples, step);
+    for (std::size_t k = 0; k < step.shaded.size(); ++k) {
+      const std::size_t i = step.shaded[k];
+      const glm::vec3& color = step.color[k];
+      if (std::isfinite(color.x + color.y + color.z))
+        lanes.composite(i, segment_alpha(step.opacity[i], lanes.segment_length(i)), color);
     }
-    live.resize(kept);
+    std::copy_n(step.t.data(), count, lanes.previous_t.data());
+    std::copy_n(step.density.data(), count, lanes.previous_density.data());
+    for (int& segment : lanes.segment) ++segment;
+    if (refracts_)
+      for (std::size_t i = 0; i < count; ++i) {
+        const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
+        MarchingRay& ray = rays[lanes.record[i]];
+        if (lanes.segment[i] > 0 && bends(ray, ior)) refract(lanes, i, ray, step.t[i], step.normal[i], ior);
+      }
+    retire_ended(lanes, rays);
+  }
+
+  // The rays that left the volume or became opaque give their record what
+  // they gathered and leave the lanes, the last lane's ray taking the place
+  // of each (a ray's samples do not depend on its lane).
+  void retire_ended(RayLanes& lanes, std::vector<MarchingRay>& rays) const {
+    const float opaque = 1.0f - std::max(options_.termination, extrapolation_);
+    std::size_t count = lanes.size();
+    for (std::size_t i = 0; i < count;) {
+      const bool segments_left = lanes.has_segments_left(i);
+      if (segments_left && !(lanes.alpha[i] >= opaque)) {
+        ++i;
+        continue;
+      }
+      MarchingRay& ray = rays[lanes.record[i]];
+      ray.color = lanes.color_of(i);
+      ray.alpha = lanes.alpha[i];
+      ray.segments_left = segments_left;
+      lanes.move(--count, i);
+    }
+    lanes.truncate(count);
+  }
+
+  // Each lane's sample: where along its ray (step.t) and where in space (step.at).
+  static void place_samples(const RayLanes& lanes, StepSamples& step) {
+    const std::size_t count = lanes.size();
+    step.t.resize(count);
+    for (int c = 0; c < 3; ++c) step.at[c].resize(count);
+    float* __restrict t = step.t.data();
+    for (std::size_t i = 0; i < count; ++i) t[i] = lanes.sample_t(i);
+    for (int c = 0; c < 3; ++c) {
+      const float* __restrict origin = lanes.origin[c].data();
+      const float* __restrict along = lanes.along[c].data();
+      float* __restrict at = step.at[c].data();
+      for (std::size_t i = 0; i < count; ++i) at[i] = origin[i] + t[i] * along[i];
+    }
   }
 
   const Kernel& kernel_;
