@@ -51,32 +51,10 @@ struct RayLanes {
   // The ray of lane `from` takes lane `to`; a step moves live rays into
   // the lanes of ended ones, then `truncate`s the rest.
   void move(std::size_t from, std::size_t to) {
-    for (int c = 0; c < 3; ++c) {
-      origin[c][to] = origin[c][from];
-      along[c][to] = along[c][from];
-      color[c][to] = color[c][from];
-    }
-    entry[to] = entry[from];
-    exit[to] = exit[from];
-    jitter[to] = jitter[from];
-    segment[to] = segment[from];
-    previous_t[to] = previous_t[from];
-    previous_density[to] = previous_density[from];
-    occupied_until[to] = occupied_until[from];
-    alpha[to] = alpha[from];
-    record[to] = record[from];
+    for_each_field([&](auto& field) { field[to] = field[from]; });
   }
   void truncate(std::size_t count) {
-    for (int c = 0; c < 3; ++c) {
-      origin[c].resize(count);
-      along[c].resize(count);
-      color[c].resize(count);
-    }
-    for (std::vector<float>* field : {&entry, &exit, &jitter, &previous_t, &previous_density, &occupied_until,
-                                      &alpha})
-      field->resize(count);
-    segment.resize(count);
-    record.resize(count);
+    for_each_field([&](auto& field) { field.resize(count); });
   }
 
   std::size_t size() const { return record.size(); }
@@ -154,6 +132,26 @@ struct RayLanes {
   std::vector<float> occupied_until;  // no need to look for empty space before
   std::vector<float> color[3], alpha;
   std::vector<std::uint32_t> record;
+
+ private:
+  // Every field's array, so that moving and truncating a lane miss none.
+  template <class Visit>
+  void for_each_field(Visit visit) {
+    for (int c = 0; c < 3; ++c) {
+      visit(origin[c]);
+      visit(along[c]);
+      visit(color[c]);
+    }
+    visit(entry);
+    visit(exit);
+    visit(jitter);
+    visit(segment);
+    visit(previous_t);
+    visit(previous_density);
+    visit(occupied_until);
+    visit(alpha);
+    visit(record);
+  }
 };
 
 }  // namespace shadetree

@@ -787,10 +787,10 @@ class Marcher {
     if (occupancy_)
       for (std::size_t i = 0; i < count; ++i) skip_empty_space(lanes, i, rays, scratch.counts);
     place_samples(lanes, step);
-    for (int c = 0; c < 3; ++c) {
-      if (samples.inputs.has(GlobalId::P)) std::copy_n(step.at[c].data(), count, samples.inputs.plane(GlobalId::P, c));
-      if (samples.inputs.has(GlobalId::I)) std::copy_n(lanes.along[c].data(), count, samples.inputs.plane(GlobalId::I, c));
-    }
+    if (samples.inputs.has(GlobalId::P))
+      for (int c = 0; c < 3; ++c) std::copy_n(step.at[c].data(), count, samples.inputs.plane(GlobalId::P, c));
+    if (samples.inputs.has(GlobalId::I))
+      for (int c = 0; c < 3; ++c) std::copy_n(lanes.along[c].data(), count, samples.inputs.plane(GlobalId::I, c));
     // The normal faces the viewer where the density has none (below).
     step.normal.resize(count);
     for (std::size_t i = 0; i < count; ++i) step.normal[i] = -lanes.along_of(i);
@@ -836,9 +836,10 @@ class Marcher {
     for (int& segment : lanes.segment) ++segment;
     if (refracts_)
       for (std::size_t i = 0; i < count; ++i) {
+        if (lanes.segment[i] <= 0) continue;  // the probe before the entry bends nothing
         const float ior = std::clamp(output(samples, OutputId::ior, i), 0.1f, 10.0f);
         MarchingRay& ray = rays[lanes.record[i]];
-        if (lanes.segment[i] > 0 && bends(ray, ior)) refract(lanes, i, ray, step.t[i], step.normal[i], ior);
+        if (bends(ray, ior)) refract(lanes, i, ray, step.t[i], step.normal[i], ior);
       }
     retire_ended(lanes, rays);
   }
